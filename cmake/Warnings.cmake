@@ -1,0 +1,12 @@
+# One interface target carries the project's compile flags, so every library,
+# lesson and test is built the same way.
+add_library(gi_flags INTERFACE)
+target_compile_options(gi_flags INTERFACE -Wall -Wextra -Wpedantic)
+if(GI_WERROR)
+  target_compile_options(gi_flags INTERFACE -Werror)
+endif()
+if(GI_SANITIZE)
+  target_compile_options(gi_flags INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                            -fno-sanitize-recover=undefined)
+  target_link_options(gi_flags INTERFACE -fsanitize=address,undefined)
+endif()

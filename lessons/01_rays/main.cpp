@@ -1,0 +1,107 @@
+// Lesson 01 -- rays: where does a ray meet a sphere, where a plane?
+// Prints worked cases (tangent rays, rays starting inside, parallel rays ...)
+// and draws what eye rays see: hit or miss, the surface normal, the distance.
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "gi/core/parallel.hpp"
+#include "gi/geometry/plane.hpp"
+#include "gi/geometry/sphere.hpp"
+#include "gi/image/image_io.hpp"
+#include "gi/report/lesson.hpp"
+#include "gi/report/options.hpp"
+#include "gi/report/table.hpp"
+#include "gi/scene/builtin_scenes.hpp"
+#include "gi/scene/scene_intersect.hpp"
+
+namespace {
+
+struct Case {
+  std::string name;
+  gi::Ray ray;
+};
+
+std::string text(const gi::vec3& v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "(%.3g, %.3g, %.3g)", v.x, v.y, v.z);
+  return buffer;
+}
+
+// One row per case: the ray, and what the intersection routine answers.
+template <class Shape>
+gi::Table worked_cases(const std::string& title, const Shape& shape, const std::vector<Case>& cases) {
+  gi::Table table(title, {{"case"}, {"origin"}, {"direction"}, {"t", 4}, {"hit point"}, {"normal"}});
+  for (const Case& c : cases) {
+    const auto hit = gi::intersect(c.ray, shape);
+    if (hit)
+      table.add_row({c.name, text(c.ray.origin), text(c.ray.direction), hit->t, text(hit->point), text(hit->normal)});
+    else
+      table.add_row({c.name, text(c.ray.origin), text(c.ray.direction), "miss", "-", "-"});
+  }
+  return table;
+}
+
+// The three pictures of what the eye rays hit.
+void draw_eye_rays(const gi::Scene& scene, int width, int height, int threads, const std::string& out) {
+  const gi::CameraFrame frame = gi::camera_frame(scene.camera, width, height);
+  gi::Image hit_or_miss(width, height), normals(width, height), depth(width, height);
+  const double far = 20.0;  // distances beyond this draw black
+  gi::parallel_for(height, threads, [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      const auto hit = gi::closest_hit(scene, gi::primary_ray(frame, x + 0.5, y + 0.5));
+      if (!hit) continue;
+      hit_or_miss.at(x, y) = gi::Pixel(1);
+      normals.at(x, y) = gi::Pixel(0.5 * hit->normal + 0.5);  // [-1, 1] -> [0, 1] per axis
+      depth.at(x, y) = gi::Pixel(float(std::max(0.0, 1.0 - hit->t / far)));
+    }
+  });
+  gi::write_png(hit_or_miss, out + "/hit_or_miss.png");
+  gi::write_png(normals, out + "/normals.png");
+  gi::write_png(depth, out + "/depth.png");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return gi::run_lesson("01_rays", [&] {
+    gi::CommonOptions common;
+    int width = 480, height = 360;
+    std::string scene_name = "spheres";
+    gi::Options options("01_rays", "Ray-sphere and ray-plane intersection: worked cases and eye-ray images.");
+    gi::add_common_options(options, common, "01_rays");
+    options.add("--width", width, "image width in pixels", 1, 8192)
+        .add("--height", height, "image height in pixels", 1, 8192)
+        .add("--scene", scene_name, "scene to draw", gi::scene_names());
+    if (!options.parse(argc, argv)) return 0;
+
+    const gi::Sphere sphere{{0, 0, -5}, 1, 0};
+    const gi::Table spheres = worked_cases("Ray-sphere: sphere at (0, 0, -5), radius 1", sphere,
+        {{"head-on", {{0, 0, 0}, {0, 0, -1}}},
+         {"off-centre", {{0.5, 0, 0}, {0, 0, -1}}},
+         {"tangent", {{1, 0, 0}, {0, 0, -1}}},
+         {"miss", {{1.5, 0, 0}, {0, 0, -1}}},
+         {"origin inside", {{0, 0, -5}, {0, 0, -1}}},
+         {"sphere behind", {{0, 0, 0}, {0, 0, 1}}},
+         {"direction length 2", {{0, 0, 0}, {0, 0, -2}}}});
+    const gi::Plane plane{{0, 0, 0}, {0, 1, 0}, 0};
+    const gi::Table planes = worked_cases("Ray-plane: the floor y = 0, normal +y", plane,
+        {{"oblique", {{0, 2, 0}, gi::normalize(gi::vec3(1, -1, 0))}},
+         {"straight down", {{0, 2, 0}, {0, -1, 0}}},
+         {"from below", {{0, -1, 0}, {0, 1, 0}}},
+         {"parallel", {{0, 1, 0}, {1, 0, 0}}},
+         {"in the plane", {{0, 0, 0}, {1, 0, 0}}},
+         {"pointing away", {{0, 1, 0}, {0, 1, 0}}},
+         {"grazing", {{0, 1, 0}, gi::normalize(gi::vec3(1, -1e-4, 0))}}});
+    spheres.print();
+    std::cout << '\n';
+    planes.print();
+    spheres.write_csv(common.out + "/ray_sphere.csv");
+    planes.write_csv(common.out + "/ray_plane.csv");
+
+    draw_eye_rays(gi::make_scene(scene_name), width, height, common.threads, common.out);
+    std::cout << "\nimages: " << common.out << "/{hit_or_miss,normals,depth}.png\n";
+    return 0;
+  });
+}

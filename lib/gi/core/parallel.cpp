@@ -1,0 +1,44 @@
+#include "gi/core/parallel.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace gi {
+
+int hardware_threads() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+void parallel_for(int count, int threads, const std::function<void(int)>& task) {
+  if (count <= 0) return;
+  if (threads <= 0) threads = hardware_threads();
+  threads = std::min(threads, count);
+
+  std::atomic<int> next{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+
+  auto worker = [&] {
+    for (int i = next++; i < count && !failed; i = next++) {
+      try {
+        task(i);
+      } catch (...) {
+        std::lock_guard lock(error_mutex);
+        if (!error) error = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+
+  std::vector<std::thread> pool;
+  pool.reserve(threads - 1);
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();  // the calling thread works too
+  for (auto& thread : pool) thread.join();
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace gi

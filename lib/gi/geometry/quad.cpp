@@ -1,0 +1,37 @@
+#include "gi/geometry/quad.hpp"
+
+#include <stdexcept>
+
+namespace gi {
+
+vec3 normal(const Quad& quad) { return normalize(cross(quad.edge_u, quad.edge_v)); }
+double area(const Quad& quad) { return length(cross(quad.edge_u, quad.edge_v)); }
+vec3 centre(const Quad& quad) { return quad.corner + 0.5 * (quad.edge_u + quad.edge_v); }
+
+void check(const Quad& quad) {
+  if (!is_finite(quad.corner) || !is_finite(quad.edge_u) || !is_finite(quad.edge_v))
+    throw std::invalid_argument("quad: corner and edges must be finite");
+  const double scale = length(quad.edge_u) * length(quad.edge_v);
+  if (!(scale > 0) || area(quad) <= 1e-12 * scale)
+    throw std::invalid_argument("quad: the edges are zero or parallel, so the quad has no area");
+}
+
+std::optional<Hit> intersect(const Ray& ray, const Quad& quad) {
+  const vec3 n = cross(quad.edge_u, quad.edge_v);  // not normalised: |n| = area
+  const double denominator = dot(ray.direction, n);
+  if (std::abs(denominator) < 1e-12 * length(ray.direction) * length(n)) return std::nullopt;
+  const double t = dot(quad.corner - ray.origin, n) / denominator;
+  if (t < ray.t_min || t > ray.t_max) return std::nullopt;
+
+  // Coordinates (s, t) of the hit in the edge basis: with w = n / |n|^2,
+  // s = w.((p - corner) x edge_v) and t = w.(edge_u x (p - corner)).
+  const vec3 point = ray.at(t);
+  const vec3 p = point - quad.corner;
+  const vec3 w = n / dot(n, n);
+  const double s = dot(w, cross(p, quad.edge_v));
+  const double u = dot(w, cross(quad.edge_u, p));
+  if (s < 0 || s > 1 || u < 0 || u > 1) return std::nullopt;
+  return Hit{t, point, normalize(n), quad.material};
+}
+
+}  // namespace gi

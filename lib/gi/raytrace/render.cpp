@@ -1,0 +1,55 @@
+#include "gi/raytrace/render.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "gi/core/parallel.hpp"
+#include "gi/core/timer.hpp"
+#include "gi/scene/camera.hpp"
+
+namespace gi {
+
+namespace {
+constexpr int tile_size = 16;
+}
+
+void check(const RenderSettings& s) {
+  if (s.width <= 0 || s.height <= 0 || s.width > 16384 || s.height > 16384)
+    throw std::invalid_argument("render: width and height must lie in [1, 16384]");
+  if (s.trace.max_depth < 0 || s.trace.max_depth >= RayCounts::max_depth)
+    throw std::invalid_argument("render: the depth limit must lie in [0, " + std::to_string(RayCounts::max_depth - 1) +
+                                "]");
+  if (!(s.trace.min_contribution >= 0 && s.trace.min_contribution <= 1))
+    throw std::invalid_argument("render: the contribution threshold must lie in [0, 1]");
+  if (!(s.trace.epsilon > 0 && s.trace.epsilon < 1))
+    throw std::invalid_argument("render: epsilon must lie in (0, 1)");
+}
+
+RenderResult render(const Scene& scene, const RenderSettings& settings) {
+  check(settings);
+  const CameraFrame frame = camera_frame(scene.camera, settings.width, settings.height);
+  const int tiles_x = (settings.width + tile_size - 1) / tile_size;
+  const int tiles_y = (settings.height + tile_size - 1) / tile_size;
+
+  RenderResult result{Image(settings.width, settings.height), {}, 0};
+  std::vector<RayCounts> tile_counts(static_cast<std::size_t>(tiles_x) * tiles_y);
+  const Timer timer;
+  parallel_for(tiles_x * tiles_y, settings.threads, [&](int tile) {
+    RayCounts& counts = tile_counts[tile];
+    const int x0 = (tile % tiles_x) * tile_size;
+    const int y0 = (tile / tiles_x) * tile_size;
+    for (int y = y0; y < std::min(y0 + tile_size, settings.height); ++y) {
+      for (int x = x0; x < std::min(x0 + tile_size, settings.width); ++x) {
+        counts.count(RayKind::Primary, 0);
+        const Color c = trace(scene, primary_ray(frame, x + 0.5, y + 0.5), settings.trace, counts);
+        result.image.at(x, y) = Pixel(c);
+      }
+    }
+  });
+  result.seconds = timer.seconds();
+  for (const RayCounts& counts : tile_counts) result.counts += counts;
+  return result;
+}
+
+}  // namespace gi

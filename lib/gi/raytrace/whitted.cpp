@@ -1,0 +1,72 @@
+#include "gi/raytrace/whitted.hpp"
+
+#include "gi/raytrace/optics.hpp"
+#include "gi/raytrace/shading.hpp"
+#include "gi/scene/scene_intersect.hpp"
+
+namespace gi {
+
+namespace {
+
+// Local illumination: ambient plus the Phong term of every light the shadow ray reaches.
+Color shade_locally(const Scene& scene, const Hit& hit, const vec3& n, const vec3& to_eye,
+                    const TraceSettings& settings, RayCounts& counts, int depth) {
+  const Material& material = scene.materials[hit.material];
+  const Color kd = diffuse_at(material, hit.point);
+  Color colour = material.emission + material.ambient * kd * scene.ambient_light;
+  for (const PointLight& light : scene.lights) {
+    const vec3 l = normalize(light.position - hit.point);
+    if (dot(n, l) <= 0) continue;  // light behind the surface: no shadow ray needed
+    counts.count(RayKind::Shadow, depth);
+    if (visible(scene, hit.point, n, light.position, settings.epsilon))
+      colour += phong(material, kd, n, l, to_eye, light.intensity);
+  }
+  return colour;
+}
+
+}  // namespace
+
+Color trace(const Scene& scene, const Ray& ray, const TraceSettings& settings, RayCounts& counts, int depth,
+            const Color& contribution) {
+  const std::optional<Hit> hit = closest_hit(scene, ray);
+  if (!hit) return scene.background;
+
+  const Material& material = scene.materials[hit->material];
+  const bool entering = dot(ray.direction, hit->normal) < 0;
+  const vec3 n = entering ? hit->normal : -hit->normal;  // the normal on the ray's side
+  Color colour = shade_locally(scene, *hit, n, -ray.direction, settings, counts, depth);
+  if (depth >= settings.max_depth) return colour;
+
+  // How much reflected and transmitted light reaches this point's colour.
+  Color k_r = material.mirror;
+  Color k_t(0.0);
+  std::optional<vec3> transmitted;
+  if (material.is_dielectric()) {
+    // Outside is air (index 1); inside is the material.
+    const double eta_i = entering ? 1.0 : material.ior;
+    const double eta_t = entering ? material.ior : 1.0;
+    const double fresnel = fresnel_dielectric(-dot(ray.direction, n), eta_i, eta_t);
+    transmitted = refract(ray.direction, n, eta_i / eta_t);
+    k_r += Color(fresnel);
+    if (transmitted) k_t = (1.0 - fresnel) * material.transmission;
+  }
+
+  // Spawn a secondary ray only where it can still change the pixel.
+  auto worth_tracing = [&](const Color& k) {
+    const double c = max_component(contribution * k);
+    return c > 0 && c >= settings.min_contribution;
+  };
+  if (worth_tracing(k_r)) {
+    counts.count(RayKind::Reflected, depth + 1);
+    const Ray reflected{hit->point + settings.epsilon * n, reflect(ray.direction, n)};
+    colour += k_r * trace(scene, reflected, settings, counts, depth + 1, contribution * k_r);
+  }
+  if (transmitted && worth_tracing(k_t)) {
+    counts.count(RayKind::Transmitted, depth + 1);
+    const Ray refracted{hit->point - settings.epsilon * n, normalize(*transmitted)};
+    colour += k_t * trace(scene, refracted, settings, counts, depth + 1, contribution * k_t);
+  }
+  return colour;
+}
+
+}  // namespace gi

@@ -1,0 +1,24 @@
+#pragma once
+#include "gi/core/ray.hpp"
+#include "gi/raytrace/ray_counts.hpp"
+#include "gi/scene/scene.hpp"
+
+namespace gi {
+
+// When recursion stops: at a depth limit, and when a ray could no longer change the
+// pixel visibly (its contribution -- the product of the k_r and k_t factors along
+// its path -- is below a threshold in every channel).
+struct TraceSettings {
+  int max_depth = 8;               // 0: eye rays and shadow rays only
+  double min_contribution = 0.0;   // 0: never stop early
+  double epsilon = 1e-6;           // how far secondary rays start off a surface (scene units)
+};
+
+// Whitted's recursive ray tracer. Returns the radiance seen along `ray`:
+//   I = k_a I_a + sum_l S_l I_l [k_d N.L + k_s (R.V)^n] + k_r I_r + k_t I_t
+// `depth` is the number of reflections/refractions that led to this ray and
+// `contribution` how much of it reaches the pixel. Counts every ray it casts.
+Color trace(const Scene& scene, const Ray& ray, const TraceSettings& settings, RayCounts& counts, int depth = 0,
+            const Color& contribution = Color(1.0));
+
+}  // namespace gi

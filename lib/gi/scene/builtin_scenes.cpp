@@ -1,0 +1,124 @@
+#include "gi/scene/builtin_scenes.hpp"
+
+#include <stdexcept>
+
+namespace gi {
+
+namespace {
+
+Material phong_plastic(const std::string& name, Color colour, double shininess) {
+  Material m;
+  m.name = name;
+  m.diffuse = 0.8 * colour;
+  m.ambient = 0.1;
+  m.specular = Color(0.5);
+  m.shininess = shininess;
+  return m;
+}
+
+Material glass(Color filter) {
+  Material m;
+  m.name = "glass";
+  m.diffuse = Color(0.0);
+  m.specular = Color(0.9);
+  m.shininess = 120;
+  m.transmission = filter;
+  m.ior = 1.5;
+  return m;
+}
+
+Material mirror(Color reflectance) {
+  Material m;
+  m.name = "mirror";
+  m.diffuse = Color(0.05);
+  m.specular = Color(0.8);
+  m.shininess = 80;
+  m.mirror = reflectance;
+  return m;
+}
+
+Scene whitted() {
+  Scene s;
+  s.name = "whitted";
+  s.background = Color(0.35, 0.55, 0.9);
+  s.ambient_light = Color(1.0);
+  Material floor = phong_plastic("checkerboard", Color(1.0, 0.1, 0.05), 1);
+  floor.specular = Color(0.0);
+  floor.checker_size = 1.0;
+  floor.checker_diffuse = 0.8 * Color(1.0, 0.9, 0.1);
+  const int checker = s.add(floor);
+  const int mirror_ball = s.add(mirror(Color(0.8)));
+  const int glass_ball = s.add(glass(Color(0.95)));
+  // A finite board, as in Whitted's picture, so the sky shows past its far edge.
+  s.add(Quad{{-4, 0, 4}, {8, 0, 0}, {0, 0, -18}, checker});
+  s.add(Sphere{{-1.1, 1.3, -3.0}, 1.1, mirror_ball});
+  s.add(Sphere{{0.55, 1.15, -0.6}, 0.9, glass_ball});
+  s.add(PointLight{{-4, 8, 6}, Color(0.9)});
+  s.camera = Camera{{0.0, 1.8, 5.5}, {-0.2, 1.0, -1.5}, {0, 1, 0}, 40};
+  return s;
+}
+
+Scene spheres() {
+  Scene s;
+  s.name = "spheres";
+  s.background = Color(0.05, 0.05, 0.08);
+  s.ambient_light = Color(1.0);
+  Material grey = phong_plastic("grey floor", Color(0.7), 1);
+  grey.specular = Color(0.0);
+  const int floor = s.add(grey);
+  const int red = s.add(phong_plastic("red", Color(0.9, 0.15, 0.1), 30));
+  const int green = s.add(phong_plastic("green", Color(0.15, 0.8, 0.2), 30));
+  const int blue = s.add(phong_plastic("blue", Color(0.15, 0.3, 0.9), 30));
+  s.add(Plane{{0, 0, 0}, {0, 1, 0}, floor});
+  s.add(Sphere{{-1.6, 0.8, -4.0}, 0.8, red});
+  s.add(Sphere{{0.0, 1.0, -5.5}, 1.0, green});
+  s.add(Sphere{{1.5, 0.6, -3.5}, 0.6, blue});
+  s.add(PointLight{{-3, 6, 1}, Color(0.9)});
+  s.camera = Camera{{0, 1.5, 2}, {0, 0.8, -4}, {0, 1, 0}, 45};
+  return s;
+}
+
+// ../shared/peers/tachyon-s10.dat, translated, so the two renderers can be timed on
+// the same picture. Tachyon's view is left-handed (looking down +z, +x is on the
+// left), ours right-handed, so every x is negated to keep the picture the same way
+// round. Tachyon's glass only lets light through (opacity); ours refracts it.
+Scene s10() {
+  Scene s;
+  s.name = "s10";
+  s.background = Color(0.25, 0.35, 0.55);
+  s.ambient_light = Color(1.0);
+  Material floor = phong_plastic("floor", Color(0.9, 0.2, 0.05), 10);
+  floor.specular = Color(0.0);
+  floor.checker_size = 0.5;
+  floor.checker_diffuse = 0.8 * Color(0.05, 0.1, 0.9);
+  const int floor_id = s.add(floor);
+  s.add(Plane{{0, 0, 0}, {0, 1, 0}, floor_id});
+  const Color colours[8] = {{0.9, 0.2, 0.2}, {0.2, 0.8, 0.2}, {0.2, 0.3, 0.9}, {0.9, 0.8, 0.2},
+                            {0.8, 0.3, 0.8}, {0.2, 0.8, 0.8}, {0.95, 0.55, 0.15}, {0.6, 0.6, 0.6}};
+  const vec3 centres[8] = {{4.6985, 0.8, 5.0261},  {3.8302, 0.8, 5.9284},  {2.5, 0.8, 6.5981},
+                           {0.8682, 0.8, 6.9544},  {-0.8682, 0.8, 6.9544}, {-2.5, 0.8, 6.5981},
+                           {-3.8302, 0.8, 5.9284}, {-4.6985, 0.8, 5.0261}};
+  for (int i = 0; i < 8; ++i)
+    s.add(Sphere{centres[i], 0.8, s.add(phong_plastic("ball " + std::to_string(i), colours[i], 40))});
+  s.add(Sphere{{1.3, 1.3, 2.2}, 1.3, s.add(mirror(Color(0.9)))});
+  s.add(Sphere{{-1.4, 1.1, 0.8}, 1.1, s.add(glass(Color(0.9, 0.95, 1.0)))});
+  s.add(PointLight{{10, 9, 3}, Color(0.6)});
+  s.add(PointLight{{-9, 6, 0}, Color(0.4)});
+  s.camera = Camera{{0, 3.5, -6}, {0, 3.5 - 0.3, -5}, {0, 1, 0}, 54};
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::string> scene_names() { return {"whitted", "spheres", "s10"}; }
+
+Scene make_scene(const std::string& name) {
+  if (name == "whitted") return whitted();
+  if (name == "spheres") return spheres();
+  if (name == "s10") return s10();
+  std::string known;
+  for (const std::string& n : scene_names()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown scene '" + name + "' (built-in scenes: " + known + ")");
+}
+
+}  // namespace gi

@@ -1,0 +1,20 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gi/scene/scene.hpp"
+
+namespace gi {
+
+// The built-in scenes, written in code:
+//   whitted  Whitted's 1980 image: a mirror sphere and a glass sphere over a
+//            red-and-yellow checkerboard
+//   spheres  three shaded spheres on a grey floor, one light: the simplest picture
+//   s10      ten spheres on a checkered plane, two lights, a mirror and a glass
+//            sphere: the same scene as ../shared/peers/tachyon-s10.dat, for timing
+std::vector<std::string> scene_names();
+
+// Throws std::invalid_argument naming the known scenes when `name` is not one.
+Scene make_scene(const std::string& name);
+
+}  // namespace gi

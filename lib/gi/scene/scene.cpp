@@ -1,0 +1,65 @@
+#include "gi/scene/scene.hpp"
+
+#include <stdexcept>
+
+namespace gi {
+
+namespace {
+
+void check_material_index(const Scene& scene, int material) {
+  if (material < 0 || material >= static_cast<int>(scene.materials.size()))
+    throw std::invalid_argument("scene '" + scene.name + "': material index " + std::to_string(material) +
+                                " does not exist (add the material first)");
+}
+
+void check(const Material& m) {
+  const bool finite = is_finite(m.diffuse) && is_finite(m.specular) && is_finite(m.mirror) &&
+                      is_finite(m.transmission) && is_finite(m.emission) && std::isfinite(m.ambient) &&
+                      std::isfinite(m.shininess) && std::isfinite(m.ior) && std::isfinite(m.checker_size);
+  if (!finite) throw std::invalid_argument("material '" + m.name + "': every value must be finite");
+  if (m.shininess < 0) throw std::invalid_argument("material '" + m.name + "': shininess must be >= 0");
+  if (m.is_dielectric() && m.ior <= 0)
+    throw std::invalid_argument("material '" + m.name + "': a transparent material needs an index of refraction > 0");
+}
+
+}  // namespace
+
+int Scene::add(const Material& material) {
+  check(material);
+  materials.push_back(material);
+  return static_cast<int>(materials.size()) - 1;
+}
+
+void Scene::add(const Sphere& sphere) {
+  check(sphere);
+  check_material_index(*this, sphere.material);
+  spheres.push_back(sphere);
+}
+
+void Scene::add(const Plane& plane) {
+  check(plane);
+  check_material_index(*this, plane.material);
+  planes.push_back(plane);
+}
+
+void Scene::add(const Quad& quad) {
+  check(quad);
+  check_material_index(*this, quad.material);
+  quads.push_back(quad);
+}
+
+void Scene::add(const PointLight& light) {
+  if (!is_finite(light.position) || !is_finite(light.intensity))
+    throw std::invalid_argument("point light: position and intensity must be finite");
+  lights.push_back(light);
+}
+
+void check(const Scene& scene) {
+  for (const Material& m : scene.materials) check(m);
+  for (const Sphere& s : scene.spheres) check(s), check_material_index(scene, s.material);
+  for (const Plane& p : scene.planes) check(p), check_material_index(scene, p.material);
+  for (const Quad& q : scene.quads) check(q), check_material_index(scene, q.material);
+  (void)camera_frame(scene.camera, 1, 1);  // throws for a degenerate camera
+}
+
+}  // namespace gi

@@ -1,0 +1,42 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gi/geometry/plane.hpp"
+#include "gi/geometry/quad.hpp"
+#include "gi/geometry/sphere.hpp"
+#include "gi/scene/camera.hpp"
+#include "gi/scene/light.hpp"
+#include "gi/scene/material.hpp"
+
+namespace gi {
+
+// A scene is plain data: one vector per kind of primitive, the materials they
+// index, the lights and a camera. Model no more than a scene needs.
+struct Scene {
+  std::string name;
+  std::vector<Material> materials;
+  std::vector<Sphere> spheres;
+  std::vector<Plane> planes;
+  std::vector<Quad> quads;
+  std::vector<PointLight> lights;
+  Color background{0.0};     // radiance of rays that hit nothing
+  Color ambient_light{0.0};  // I_a of the Phong model
+  Camera camera;
+
+  // Adders check their argument (and that its material exists) and throw
+  // std::invalid_argument with a clear message otherwise.
+  int add(const Material& material);  // returns the material's index
+  void add(const Sphere& sphere);
+  void add(const Plane& plane);
+  void add(const Quad& quad);
+  void add(const PointLight& light);
+
+  std::size_t primitive_count() const { return spheres.size() + planes.size() + quads.size(); }
+};
+
+// Throws std::invalid_argument if anything in the scene is invalid (for scenes
+// assembled by hand rather than through the adders).
+void check(const Scene& scene);
+
+}  // namespace gi
