@@ -10,3 +10,7 @@ if(GI_SANITIZE)
                                             -fno-sanitize-recover=undefined)
   target_link_options(gi_flags INTERFACE -fsanitize=address,undefined)
 endif()
+# GCC 12 reports false -Wstringop-overflow/-overread warnings inside libstdc++'s
+# std::string when LTO inlines across files (GCC bugs 105329, 105651); they are
+# silenced for the link step of optimised builds only.
+target_link_options(gi_flags INTERFACE $<$<CONFIG:Release>:-Wno-stringop-overflow -Wno-stringop-overread>)

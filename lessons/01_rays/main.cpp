@@ -9,6 +9,7 @@
 #include "gi/core/parallel.hpp"
 #include "gi/geometry/plane.hpp"
 #include "gi/geometry/sphere.hpp"
+#include "gi/image/diff.hpp"
 #include "gi/image/image_io.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/options.hpp"
@@ -46,20 +47,23 @@ gi::Table worked_cases(const std::string& title, const Shape& shape, const std::
 // The three pictures of what the eye rays hit.
 void draw_eye_rays(const gi::Scene& scene, int width, int height, int threads, const std::string& out) {
   const gi::CameraFrame frame = gi::camera_frame(scene.camera, width, height);
-  gi::Image hit_or_miss(width, height), normals(width, height), depth(width, height);
-  const double far = 20.0;  // distances beyond this draw black
+  gi::Image hit_or_miss(width, height), normals(width, height);
+  std::vector<double> distance(static_cast<std::size_t>(width) * height, 0.0);
+  // Depth in false colour: red near the eye through yellow, green and blue to black
+  // at twice the distance to the point the camera looks at, and for misses.
+  const double far = 2.0 * gi::length(scene.camera.look_at - scene.camera.eye);
   gi::parallel_for(height, threads, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const auto hit = gi::closest_hit(scene, gi::primary_ray(frame, x + 0.5, y + 0.5));
       if (!hit) continue;
       hit_or_miss.at(x, y) = gi::Pixel(1);
       normals.at(x, y) = gi::Pixel(0.5 * hit->normal + 0.5);  // [-1, 1] -> [0, 1] per axis
-      depth.at(x, y) = gi::Pixel(float(std::max(0.0, 1.0 - hit->t / far)));
+      distance[static_cast<std::size_t>(y) * width + x] = std::max(0.0, 1.0 - hit->t / far);
     }
   });
   gi::write_png(hit_or_miss, out + "/hit_or_miss.png");
   gi::write_png(normals, out + "/normals.png");
-  gi::write_png(depth, out + "/depth.png");
+  gi::write_png(gi::false_colour(distance, width, height, 0.0, 1.0), out + "/depth.png");
 }
 
 }  // namespace

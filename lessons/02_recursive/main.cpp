@@ -43,7 +43,7 @@ gi::RenderResult render_median(const gi::Scene& scene, const gi::RenderSettings&
   std::vector<gi::RenderResult> runs;
   for (int i = 0; i < repeat; ++i) runs.push_back(gi::render(scene, settings));
   std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
-  return runs[runs.size() / 2];
+  return std::move(runs[runs.size() / 2]);
 }
 
 }  // namespace

@@ -46,7 +46,9 @@ TEST(Whitted, FacingMirrorsSumTheGeometricSeries) {
     const Color c = gi::trace(scene, gi::Ray{{0, 0, 0}, {0, 0, 1}}, settings, counts);
     EXPECT_NEAR(c.x, (1 - std::pow(0.5, depth + 1)) / 0.5, 1e-12) << "depth " << depth;
     EXPECT_EQ(counts.of(gi::RayKind::Reflected), static_cast<std::uint64_t>(depth));
-    if (depth > 0) EXPECT_EQ(counts.at[int(gi::RayKind::Reflected)][depth], 1u);
+    if (depth > 0) {
+      EXPECT_EQ(counts.at[int(gi::RayKind::Reflected)][depth], 1u);
+    }
   }
 }
 

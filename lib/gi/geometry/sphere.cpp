@@ -1,5 +1,6 @@
 #include "gi/geometry/sphere.hpp"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -20,12 +21,16 @@ std::optional<Hit> intersect(const Ray& ray, const Sphere& sphere) {
   const vec3 oc = ray.origin - sphere.center;
   const double a = dot(ray.direction, ray.direction);
   const double h = dot(ray.direction, oc);
-  // The discriminant h^2 - a c0 equals a (r^2 - |oc - (h/a) d|^2). The second form
-  // subtracts numbers of the sphere's size, not of the distance squared, so a small
-  // sphere far away does not lose all its digits to cancellation.
-  const vec3 closest = oc - (h / a) * ray.direction;
-  const double discriminant = a * (sphere.radius * sphere.radius - dot(closest, closest));
-  if (discriminant < 0) return std::nullopt;  // the line misses the sphere
+  const double c0 = dot(oc, oc) - sphere.radius * sphere.radius;
+  if (c0 > 0 && h > 0) return std::nullopt;  // outside and heading away: both roots are negative
+  // The textbook discriminant h^2 - a c0 is cheap but carries a rounding error of
+  // about eps * h^2, which for a small sphere far away is larger than the answer.
+  // So it only rejects clear misses; what is left is decided by the same quantity
+  // in a form without the cancellation: (a^2 r^2 - |a oc - h d|^2) / a.
+  if (h * h - a * c0 < -4 * std::numeric_limits<double>::epsilon() * h * h) return std::nullopt;
+  const vec3 offset = a * oc - h * ray.direction;  // a times the line's offset from the centre
+  const double discriminant = (a * a * sphere.radius * sphere.radius - dot(offset, offset)) / a;
+  if (discriminant < 0) return std::nullopt;
 
   // Try the nearer root first; if it lies behind t_min (the ray starts inside the
   // sphere, or the sphere is behind it) the farther root may still be in range.

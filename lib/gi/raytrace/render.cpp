@@ -11,7 +11,7 @@
 namespace gi {
 
 namespace {
-constexpr int tile_size = 16;
+constexpr int tile_size = 32;
 }
 
 void check(const RenderSettings& s) {

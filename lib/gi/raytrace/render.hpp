@@ -23,7 +23,7 @@ struct RenderResult {
 void check(const RenderSettings& settings);
 
 // One eye ray through the centre of every pixel, traced recursively. The image
-// is cut into 16x16 tiles that threads take in turn; every pixel depends only on
+// is cut into 32x32 tiles that threads take in turn; every pixel depends only on
 // the scene and the settings, so the image is the same for any thread count.
 RenderResult render(const Scene& scene, const RenderSettings& settings);
 

@@ -15,11 +15,11 @@ Color shade_locally(const Scene& scene, const Hit& hit, const vec3& n, const vec
   const Color kd = diffuse_at(material, hit.point);
   Color colour = material.emission + material.ambient * kd * scene.ambient_light;
   for (const PointLight& light : scene.lights) {
-    const vec3 l = normalize(light.position - hit.point);
+    const Ray shadow = shadow_ray(hit.point, n, light.position, settings.epsilon);
+    const vec3& l = shadow.direction;
     if (dot(n, l) <= 0) continue;  // light behind the surface: no shadow ray needed
     counts.count(RayKind::Shadow, depth);
-    if (visible(scene, hit.point, n, light.position, settings.epsilon))
-      colour += phong(material, kd, n, l, to_eye, light.intensity);
+    if (!any_hit(scene, shadow)) colour += phong(material, kd, n, l, to_eye, light.intensity);
   }
   return colour;
 }

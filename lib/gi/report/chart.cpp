@@ -1,0 +1,161 @@
+#include "gi/report/chart.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace gi {
+
+namespace {
+
+// Okabe-Ito: distinguishable with the common colour-vision deficiencies.
+const char* const palette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442"};
+
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else if (c == '"') out += "&quot;";
+    else out += c;
+  }
+  return out;
+}
+
+std::string num(double v) {  // fixed formatting, independent of the locale
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f", v);
+  return buffer;
+}
+
+std::string tick_label(double v, bool log) {
+  char buffer[32];
+  if (log) std::snprintf(buffer, sizeof buffer, "1e%d", static_cast<int>(std::lround(std::log10(v))));
+  else std::snprintf(buffer, sizeof buffer, "%g", std::abs(v) < 1e-12 ? 0.0 : v);
+  return buffer;
+}
+
+struct Axis {
+  double lo, hi;
+  bool log;
+  double map(double v, double from, double to) const {  // data value to pixel
+    const double a = log ? std::log10(lo) : lo, b = log ? std::log10(hi) : hi;
+    const double x = log ? std::log10(v) : v;
+    return from + (x - a) / (b - a) * (to - from);
+  }
+};
+
+bool usable(double v, bool log) { return std::isfinite(v) && (!log || v > 0); }
+
+// The data range of one axis, widened to whole ticks.
+Axis make_axis(const Chart& chart, bool x_axis) {
+  const bool log = x_axis ? chart.log_x : chart.log_y;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Series& s : chart.series)
+    for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
+      const double x = s.x[i], y = s.y[i];
+      if (!usable(x, chart.log_x) || !usable(y, chart.log_y)) continue;
+      const double v = x_axis ? x : y;
+      lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+  if (!(lo <= hi)) lo = log ? 1 : 0, hi = log ? 10 : 1;
+  if (lo == hi) lo = log ? lo / 10 : lo - 1, hi = log ? hi * 10 : hi + 1;
+  const std::vector<double> ticks = axis_ticks(lo, hi, log);
+  return {std::min(lo, ticks.front()), std::max(hi, ticks.back()), log};
+}
+
+}  // namespace
+
+std::vector<double> axis_ticks(double lo, double hi, bool log) {
+  std::vector<double> ticks;
+  if (log) {
+    for (int e = static_cast<int>(std::floor(std::log10(lo))); e <= static_cast<int>(std::ceil(std::log10(hi))); ++e)
+      ticks.push_back(std::pow(10.0, e));
+    return ticks;
+  }
+  // The smallest step of the form {1, 2, 5} x 10^k that gives at most 8 intervals.
+  const double raw = (hi - lo) / 8;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = decade * 10;
+  for (double m : {1.0, 2.0, 5.0})
+    if (m * decade >= raw) {
+      step = m * decade;
+      break;
+    }
+  for (double t = std::floor(lo / step) * step; t <= std::ceil(hi / step) * step + 0.5 * step; t += step)
+    ticks.push_back(t);
+  return ticks;
+}
+
+std::string to_svg(const Chart& chart, int width, int height) {
+  const double left = 80, right = width - 200.0, top = 40, bottom = height - 60.0;
+  const Axis ax = make_axis(chart, true), ay = make_axis(chart, false);
+  std::ostringstream os;
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+     << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+     << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+     << "<text x=\"" << num((left + right) / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
+     << escape(chart.title) << "</text>\n";
+  // Grid lines and tick labels.
+  for (double t : axis_ticks(ax.lo, ax.hi, ax.log)) {
+    if (t < ax.lo * (1 - 1e-9) - 1e-12 || t > ax.hi * (1 + 1e-9) + 1e-12) continue;
+    const double x = ax.map(t, left, right);
+    os << "<line x1=\"" << num(x) << "\" y1=\"" << num(top) << "\" x2=\"" << num(x) << "\" y2=\"" << num(bottom)
+       << "\" stroke=\"#ddd\"/>\n<text x=\"" << num(x) << "\" y=\"" << num(bottom + 16)
+       << "\" text-anchor=\"middle\">" << tick_label(t, ax.log) << "</text>\n";
+  }
+  for (double t : axis_ticks(ay.lo, ay.hi, ay.log)) {
+    if (t < ay.lo * (1 - 1e-9) - 1e-12 || t > ay.hi * (1 + 1e-9) + 1e-12) continue;
+    const double y = ay.map(t, bottom, top);
+    os << "<line x1=\"" << num(left) << "\" y1=\"" << num(y) << "\" x2=\"" << num(right) << "\" y2=\"" << num(y)
+       << "\" stroke=\"#ddd\"/>\n<text x=\"" << num(left - 6) << "\" y=\"" << num(y + 4)
+       << "\" text-anchor=\"end\">" << tick_label(t, ay.log) << "</text>\n";
+  }
+  os << "<rect x=\"" << num(left) << "\" y=\"" << num(top) << "\" width=\"" << num(right - left) << "\" height=\""
+     << num(bottom - top) << "\" fill=\"none\" stroke=\"black\"/>\n"
+     << "<text x=\"" << num((left + right) / 2) << "\" y=\"" << num(bottom + 40) << "\" text-anchor=\"middle\">"
+     << escape(chart.x_label) << "</text>\n"
+     << "<text transform=\"translate(20," << num((top + bottom) / 2) << ") rotate(-90)\" text-anchor=\"middle\">"
+     << escape(chart.y_label) << "</text>\n";
+  // Series, each with its colour and marker shape, and its legend entry.
+  for (std::size_t s = 0; s < chart.series.size(); ++s) {
+    const Series& series = chart.series[s];
+    const std::string colour = palette[s % std::size(palette)];
+    std::string points;
+    std::ostringstream marks;
+    for (std::size_t i = 0; i < std::min(series.x.size(), series.y.size()); ++i) {
+      if (!usable(series.x[i], ax.log) || !usable(series.y[i], ay.log)) continue;
+      const double x = ax.map(series.x[i], left, right), y = ay.map(series.y[i], bottom, top);
+      points += num(x) + "," + num(y) + " ";
+      if (series.mark != Mark::Line) {
+        if (s % 3 == 0) marks << "<circle cx=\"" << num(x) << "\" cy=\"" << num(y) << "\" r=\"3.5\"";
+        else if (s % 3 == 1) marks << "<rect x=\"" << num(x - 3.5) << "\" y=\"" << num(y - 3.5) << "\" width=\"7\" height=\"7\"";
+        else marks << "<path d=\"M" << num(x) << "," << num(y - 4.5) << " l4,7.5 h-8 z\"";
+        marks << " fill=\"" << colour << "\"/>\n";
+      }
+    }
+    if (series.mark != Mark::Points && !points.empty())
+      os << "<polyline points=\"" << points << "\" fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\"/>\n";
+    os << marks.str();
+    const double ly = top + 10 + 20.0 * s;
+    os << "<line x1=\"" << num(right + 15) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(right + 40) << "\" y2=\""
+       << num(ly) << "\" stroke=\"" << colour << "\" stroke-width=\"3\"/>\n<text x=\"" << num(right + 46)
+       << "\" y=\"" << num(ly + 4) << "\">" << escape(series.name) << "</text>\n";
+  }
+  os << "</svg>\n";
+  return os.str();
+}
+
+void write_svg(const Chart& chart, const std::filesystem::path& file, int width, int height) {
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+  out << to_svg(chart, width, height);
+}
+
+}  // namespace gi

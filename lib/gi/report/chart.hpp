@@ -1,0 +1,33 @@
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace gi {
+
+enum class Mark { Line, Points, LinePoints };
+
+struct Series {
+  std::string name;
+  std::vector<double> x, y;
+  Mark mark = Mark::LinePoints;
+};
+
+// A chart of one or more series, e.g. error against time for each method.
+struct Chart {
+  std::string title, x_label, y_label;
+  bool log_x = false, log_y = false;
+  std::vector<Series> series;
+};
+
+// SVG text of the chart: axes with 1-2-5 ticks (decades on log axes), labels,
+// title and a legend. Points that are not finite, or not positive on a log axis,
+// are left out.
+std::string to_svg(const Chart& chart, int width = 720, int height = 480);
+void write_svg(const Chart& chart, const std::filesystem::path& file, int width = 720, int height = 480);
+
+// Tick positions covering [lo, hi]: 1-2-5 steps on a linear axis, powers of ten on
+// a log axis (lo > 0 there).
+std::vector<double> axis_ticks(double lo, double hi, bool log);
+
+}  // namespace gi

@@ -1,0 +1,186 @@
+#include "gi/report/options.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+#include "gi/report/table.hpp"
+
+namespace gi {
+
+namespace {
+
+long long parse_integer(const std::string& name, const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  const long long v = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno == ERANGE)
+    throw OptionError(name + " expects a whole number, got '" + text + "'");
+  return v;
+}
+
+double parse_real(const std::string& name, const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0') throw OptionError(name + " expects a number, got '" + text + "'");
+  if (!std::isfinite(v)) throw OptionError(name + " must be a finite number, got '" + text + "'");
+  return v;
+}
+
+template <class T>
+std::string range_text(T min, T max) {
+  std::ostringstream os;
+  os << "[" << min << ", " << max << "]";
+  return os.str();
+}
+
+template <class T>
+void check_range(const std::string& name, T v, T min, T max, const std::string& text) {
+  if (v < min || v > max) throw OptionError(name + " must be in " + range_text(min, max) + ", got " + text);
+}
+
+// Edit distance, to suggest the option a typo meant.
+std::size_t distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+Options::Options(std::string program, std::string summary) : program_(std::move(program)), summary_(std::move(summary)) {}
+
+Options& Options::add_option(Option option) {
+  options_.push_back(std::move(option));
+  return *this;
+}
+
+Options& Options::add(const std::string& name, int& value, const std::string& help, int min, int max) {
+  return add_option({name, help, std::to_string(value), range_text(min, max), true, [&value, name, min, max](const std::string& t) {
+                       const long long v = parse_integer(name, t);
+                       check_range<long long>(name, v, min, max, t);
+                       value = static_cast<int>(v);
+                     }});
+}
+
+Options& Options::add(const std::string& name, double& value, const std::string& help, double min, double max) {
+  std::ostringstream d;
+  d << value;
+  return add_option({name, help, d.str(), range_text(min, max), true, [&value, name, min, max](const std::string& t) {
+                       const double v = parse_real(name, t);
+                       check_range(name, v, min, max, t);
+                       value = v;
+                     }});
+}
+
+Options& Options::add(const std::string& name, std::uint64_t& value, const std::string& help) {
+  return add_option({name, help, std::to_string(value), "", true, [&value, name](const std::string& t) {
+                       const long long v = parse_integer(name, t);
+                       if (v < 0) throw OptionError(name + " must not be negative, got " + t);
+                       value = static_cast<std::uint64_t>(v);
+                     }});
+}
+
+Options& Options::add(const std::string& name, std::string& value, const std::string& help,
+                      std::vector<std::string> choices) {
+  std::string listed;
+  for (const std::string& c : choices) listed += (listed.empty() ? "" : ", ") + c;
+  return add_option({name, help, value, listed.empty() ? "" : "one of: " + listed, true,
+                     [&value, name, choices, listed](const std::string& t) {
+                       if (!choices.empty() && std::find(choices.begin(), choices.end(), t) == choices.end())
+                         throw OptionError(name + " must be one of: " + listed + "; got '" + t + "'");
+                       value = t;
+                     }});
+}
+
+Options& Options::add_flag(const std::string& name, bool& value, const std::string& help) {
+  return add_option({name, help, "", "", false, [&value](const std::string&) { value = true; }});
+}
+
+Options& Options::add_optional(const std::string& name, std::optional<int>& value, const std::string& help, int min,
+                               int max) {
+  return add_option({name, help, "unset", range_text(min, max), true, [&value, name, min, max](const std::string& t) {
+                       const long long v = parse_integer(name, t);
+                       check_range<long long>(name, v, min, max, t);
+                       value = static_cast<int>(v);
+                     }});
+}
+
+const Options::Option* Options::find(const std::string& name) const {
+  for (const Option& o : options_)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+bool Options::parse(int argc, const char* const* argv) {
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      std::cout << help();
+      return false;
+    }
+    std::string value;
+    bool has_value = false;
+    if (const auto eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+      value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+      has_value = true;
+    }
+    const Option* option = find(arg);
+    if (!option) {
+      std::string message = "unknown option '" + arg + "'";
+      const Option* nearest = nullptr;
+      for (const Option& o : options_)
+        if (!nearest || distance(arg, o.name) < distance(arg, nearest->name)) nearest = &o;
+      if (nearest && distance(arg, nearest->name) <= 3) message += " (did you mean " + nearest->name + "?)";
+      throw OptionError(message);
+    }
+    if (!option->takes_value) {
+      if (has_value) throw OptionError(arg + " takes no value");
+      option->set("");
+      continue;
+    }
+    if (!has_value) {
+      if (i + 1 >= argc) throw OptionError(arg + " needs a value");
+      value = argv[++i];
+    }
+    option->set(value);
+  }
+  return true;
+}
+
+std::string Options::help() const {
+  std::ostringstream os;
+  os << "usage: " << program_ << " [options]\n\n" << summary_ << "\n\noptions:\n";
+  std::size_t width = 6;
+  for (const Option& o : options_) width = std::max(width, o.name.size() + (o.takes_value ? 6 : 0));
+  for (const Option& o : options_) {
+    const std::string left = o.name + (o.takes_value ? " VALUE" : "");
+    os << "  " << left << std::string(width - left.size() + 2, ' ') << o.help;
+    if (!o.default_text.empty()) os << " (default " << o.default_text << ")";
+    if (!o.range_text.empty()) os << (o.range_text.rfind("one of", 0) == 0 ? "; " : ", range ") << o.range_text;
+    os << '\n';
+  }
+  os << "  --help" << std::string(width - 4, ' ') << "print this help and exit\n";
+  return os.str();
+}
+
+void add_common_options(Options& options, CommonOptions& common, const std::string& lesson_name) {
+  common.out = "out/" + lesson_name;
+  options.add("--out", common.out, "folder for images, tables (CSV) and charts (SVG)")
+      .add("--threads", common.threads, "worker threads, 0 = all cores (the output is the same for any number)", 0, 256)
+      .add("--seed", common.seed, "seed of the random numbers");
+}
+
+}  // namespace gi

@@ -1,0 +1,60 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace gi {
+
+// A bad command line: the message is one line a student can act on.
+struct OptionError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// A lesson's command-line options: each is bound to a variable that holds its default.
+// Accepts "--name value" and "--name=value"; checks ranges and choices.
+class Options {
+ public:
+  Options(std::string program, std::string summary);
+
+  Options& add(const std::string& name, int& value, const std::string& help, int min, int max);
+  Options& add(const std::string& name, double& value, const std::string& help, double min, double max);
+  Options& add(const std::string& name, std::uint64_t& value, const std::string& help);
+  // Empty `choices` accepts any text.
+  Options& add(const std::string& name, std::string& value, const std::string& help,
+               std::vector<std::string> choices = {});
+  Options& add_flag(const std::string& name, bool& value, const std::string& help);
+  Options& add_optional(const std::string& name, std::optional<int>& value, const std::string& help, int min,
+                        int max);
+
+  // Returns false after printing the help for --help or -h (the lesson then exits 0).
+  // Throws OptionError for an unknown option, a missing or malformed value, or a value
+  // out of range.
+  bool parse(int argc, const char* const* argv);
+  std::string help() const;
+
+ private:
+  struct Option {
+    std::string name, help, default_text, range_text;
+    bool takes_value = true;
+    std::function<void(const std::string&)> set;  // parses the text, checks it, stores it
+  };
+  Options& add_option(Option option);
+  const Option* find(const std::string& name) const;
+
+  std::string program_, summary_;
+  std::vector<Option> options_;
+};
+
+// The options every lesson has: --out DIR (default out/<lesson>), --threads N (0 = all
+// cores) and --seed N.
+struct CommonOptions {
+  std::string out;
+  int threads = 0;
+  std::uint64_t seed = 1;
+};
+void add_common_options(Options& options, CommonOptions& common, const std::string& lesson_name);
+
+}  // namespace gi

@@ -1,0 +1,108 @@
+#include "gi/report/table.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace gi {
+
+std::string format_number(double value, int precision, Format format) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  const double magnitude = std::abs(value);
+  const bool scientific =
+      format == Format::Scientific || (format == Format::Auto && value != 0 && (magnitude < 1e-3 || magnitude >= 1e7));
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, scientific ? "%.*e" : "%.*f", precision, value);
+  return buffer;
+}
+
+namespace {
+
+std::string cell_text(const Cell& cell, const Column& column) {
+  if (const auto* i = std::get_if<long long>(&cell.value)) return std::to_string(*i);
+  if (const auto* d = std::get_if<double>(&cell.value)) return format_number(*d, column.precision, column.format);
+  return std::get<std::string>(cell.value);
+}
+
+// Full precision for CSV: the shortest text that reads back as the same double.
+std::string csv_text(const Cell& cell) {
+  if (const auto* i = std::get_if<long long>(&cell.value)) return std::to_string(*i);
+  if (const auto* d = std::get_if<double>(&cell.value)) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", *d);
+    return buffer;
+  }
+  const std::string& s = std::get<std::string>(cell.value);
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string quoted = "\"";
+  for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+}  // namespace
+
+Table::Table(std::string title, std::vector<Column> columns) : title_(std::move(title)), columns_(std::move(columns)) {}
+
+void Table::add_row(std::vector<Cell> cells) {
+  if (cells.size() != columns_.size())
+    throw std::invalid_argument("table '" + title_ + "': a row needs " + std::to_string(columns_.size()) +
+                                " cells, got " + std::to_string(cells.size()));
+  rows_.push_back(std::move(cells));
+}
+
+std::string Table::to_string() const {
+  // Text cells align left, numbers right; each column is as wide as its widest entry.
+  std::vector<std::vector<std::string>> text(rows_.size());
+  std::vector<std::size_t> width(columns_.size());
+  for (std::size_t c = 0; c < columns_.size(); ++c) width[c] = columns_[c].name.size();
+  for (std::size_t r = 0; r < rows_.size(); ++r)
+    for (std::size_t c = 0; c < columns_.size(); ++c) {
+      text[r].push_back(cell_text(rows_[r][c], columns_[c]));
+      width[c] = std::max(width[c], text[r][c].size());
+    }
+  auto pad = [](const std::string& s, std::size_t w, bool left) {
+    const std::string space(w - s.size(), ' ');
+    return left ? s + space : space + s;
+  };
+  // A column holding any number is a numeric column: all its cells align right.
+  std::vector<bool> numeric(columns_.size(), false);
+  for (const auto& row : rows_)
+    for (std::size_t c = 0; c < columns_.size(); ++c)
+      if (!std::holds_alternative<std::string>(row[c].value)) numeric[c] = true;
+  auto line = [&](const std::vector<std::string>& cells) {
+    std::string s;
+    for (std::size_t c = 0; c < cells.size(); ++c) s += (c ? "  " : "") + pad(cells[c], width[c], !numeric[c]);
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    return s + '\n';
+  };
+  std::ostringstream os;
+  if (!title_.empty()) os << title_ << '\n';
+  std::vector<std::string> header;
+  for (const Column& column : columns_) header.push_back(column.name);
+  const std::string header_line = line(header);
+  os << header_line;
+  std::size_t total = 0;
+  for (std::size_t c = 0; c < columns_.size(); ++c) total += width[c] + (c ? 2 : 0);
+  os << std::string(total, '-') << '\n';
+  for (const auto& cells : text) os << line(cells);
+  return os.str();
+}
+
+void Table::print(std::ostream& os) const { os << to_string() << std::flush; }
+
+void Table::write_csv(const std::filesystem::path& file) const {
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+  for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << csv_text(Cell(columns_[c].name));
+  out << '\n';
+  for (const auto& row : rows_) {
+    for (std::size_t c = 0; c < row.size(); ++c) out << (c ? "," : "") << csv_text(row[c]);
+    out << '\n';
+  }
+}
+
+}  // namespace gi
