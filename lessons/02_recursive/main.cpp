@@ -23,7 +23,7 @@ namespace {
 
 std::vector<gi::Column> ray_columns(const std::string& first) {
   return {{first}, {"primary"}, {"shadow"}, {"reflected"}, {"transmitted"}, {"total"},
-          {"ms", 1},  {"Mrays/s", 2}, {"RMSE", 5}, {"PSNR dB", 1}};
+          {"ms", 1},  {"Mrays/s", 2}, {"RMSE", 2, gi::Format::Scientific}, {"PSNR dB", 1}};
 }
 
 // A row of rays by kind, time and error against the reference image.

@@ -51,8 +51,8 @@ Scene whitted() {
   const int glass_ball = s.add(glass(Color(0.95)));
   // A finite board, as in Whitted's picture, so the sky shows past its far edge.
   s.add(Quad{{-4, 0, 4}, {8, 0, 0}, {0, 0, -18}, checker});
-  s.add(Sphere{{-1.1, 1.3, -3.0}, 1.1, mirror_ball});
-  s.add(Sphere{{0.55, 1.15, -0.6}, 0.9, glass_ball});
+  s.add(Sphere{{-1.3, 1.3, -3.4}, 1.1, mirror_ball});
+  s.add(Sphere{{0.9, 1.1, -0.5}, 0.9, glass_ball});
   s.add(PointLight{{-4, 8, 6}, Color(0.9)});
   s.camera = Camera{{0.0, 1.8, 5.5}, {-0.2, 1.0, -1.5}, {0, 1, 0}, 40};
   return s;
