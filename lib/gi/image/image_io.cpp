@@ -41,16 +41,16 @@ namespace {
 // boundary[k] is the linear value whose encoding is exactly (k + 0.5) / 255: values
 // below it round to code k or less. Comparing against these boundaries gives the
 // same code as rounding 255 * encode(c), without a pow() per channel. A coarse
-// table of 4096 buckets says where to start; at most a few steps remain.
+// table of 4096 buckets says where to start; a step or two remains.
 struct SrgbTable {
-  std::array<float, 256> boundary{};
+  std::array<double, 256> boundary{};
   std::array<std::uint8_t, 4097> first_code{};
   SrgbTable() {
-    for (int k = 0; k < 255; ++k) boundary[k] = static_cast<float>(srgb_decode((k + 0.5) / 255.0));
-    boundary[255] = std::numeric_limits<float>::infinity();
+    for (int k = 0; k < 255; ++k) boundary[k] = srgb_decode((k + 0.5) / 255.0);
+    boundary[255] = std::numeric_limits<double>::infinity();
     int code = 0;
     for (int i = 0; i <= 4096; ++i) {
-      while (i / 4096.0f >= boundary[code]) ++code;
+      while (i / 4096.0 >= boundary[code]) ++code;
       first_code[i] = static_cast<std::uint8_t>(code);
     }
   }
@@ -64,6 +64,7 @@ std::uint8_t to_srgb8(float linear) {
   if (linear >= 1) return 255;
   int code = srgb_table.first_code[static_cast<int>(linear * 4096.0f)];
   while (linear >= srgb_table.boundary[code]) ++code;
+  while (code > 0 && linear < srgb_table.boundary[code - 1]) --code;  // float rounding put it a bucket too far
   return static_cast<std::uint8_t>(code);
 }
 

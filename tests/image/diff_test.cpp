@@ -1,0 +1,41 @@
+#include "gi/image/diff.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+TEST(Diff, BlackWhereEqualRedAtTheLargestDifference) {
+  gi::Image a(3, 1, gi::Pixel(0.5f)), b = a;
+  b.at(2, 0) = gi::Pixel(0.9f);
+  const gi::Image d = gi::difference_image(a, b);
+  EXPECT_EQ(d.at(0, 0), gi::Pixel(0));
+  EXPECT_EQ(d.at(2, 0), gi::Pixel(1, 0, 0));
+}
+
+TEST(Diff, FalseColourRamp) {
+  const gi::Image img = gi::false_colour({0.0, 0.25, 0.5, 0.75, 1.0, 2.0}, 6, 1, 0.0, 1.0);
+  EXPECT_EQ(img.at(0, 0), gi::Pixel(0, 0, 0));
+  EXPECT_EQ(img.at(1, 0), gi::Pixel(0, 0, 1));
+  EXPECT_EQ(img.at(2, 0), gi::Pixel(0, 1, 0));
+  EXPECT_EQ(img.at(3, 0), gi::Pixel(1, 1, 0));
+  EXPECT_EQ(img.at(4, 0), gi::Pixel(1, 0, 0));
+  EXPECT_EQ(img.at(5, 0), gi::Pixel(1, 0, 0));  // clamped
+}
+
+TEST(Diff, CropEnlargeSideBySide) {
+  gi::Image img(4, 3);
+  img.at(2, 1) = gi::Pixel(1);
+  const gi::Image c = gi::crop(img, 2, 1, 2, 2);
+  EXPECT_EQ(c.at(0, 0), gi::Pixel(1));
+  EXPECT_THROW(gi::crop(img, 3, 0, 2, 1), std::invalid_argument);
+  const gi::Image e = gi::enlarge(c, 3);
+  EXPECT_EQ(e.width, 6);
+  EXPECT_EQ(e.at(2, 2), gi::Pixel(1));
+  EXPECT_EQ(e.at(3, 3), gi::Pixel(0));
+  const gi::Image s = gi::side_by_side({img, c}, 1, gi::Pixel(0.5f));
+  EXPECT_EQ(s.width, 4 + 1 + 2);
+  EXPECT_EQ(s.height, 3);
+  EXPECT_EQ(s.at(4, 0), gi::Pixel(0.5f));
+  EXPECT_EQ(s.at(5, 0), gi::Pixel(1));
+  EXPECT_EQ(s.at(5, 2), gi::Pixel(0.5f));  // below the shorter image: gap colour
+}

@@ -1,0 +1,56 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "gi/image/image_io.hpp"
+
+namespace {
+std::filesystem::path temp(const std::string& name) { return std::filesystem::path(testing::TempDir()) / "gi_image_test" / name; }
+
+gi::Image ramp() {
+  gi::Image image(17, 5);
+  for (int y = 0; y < 5; ++y)
+    for (int x = 0; x < 17; ++x) image.at(x, y) = gi::Pixel(x / 16.0f, y / 4.0f, 0.25f);
+  return image;
+}
+}  // namespace
+
+TEST(ImageIo, PngRoundTripKeepsEveryCode) {
+  const gi::Image image = ramp();
+  gi::write_png(image, temp("ramp.png"));
+  const gi::Image back = gi::read_png(temp("ramp.png"));
+  ASSERT_TRUE(back.same_size(image));
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(gi::to_srgb8(back.pixels[i][c]), gi::to_srgb8(image.pixels[i][c]));
+  EXPECT_EQ(gi::to_srgb8(back.at(0, 0).x), 0);  // row 0 is the top
+  EXPECT_EQ(gi::to_srgb8(back.at(16, 4).y), 255);
+}
+
+TEST(ImageIo, ExposureAndReinhard) {
+  gi::Image image(2, 1, gi::Pixel(1.0f));
+  gi::write_png(image, temp("tone.png"), 0.5, gi::ToneMap::Clamp);
+  EXPECT_EQ(gi::to_srgb8(gi::read_png(temp("tone.png")).at(0, 0).x), gi::to_srgb8(0.5f));
+  gi::write_png(image, temp("tone.png"), 1.0, gi::ToneMap::Reinhard);  // 1 / (1 + 1)
+  EXPECT_EQ(gi::to_srgb8(gi::read_png(temp("tone.png")).at(0, 0).x), gi::to_srgb8(0.5f));
+}
+
+TEST(ImageIo, HdrRoundTripWithinRgbePrecision) {
+  // RGBE shares one exponent per pixel: precision is relative to the largest channel.
+  gi::Image image(3, 2, gi::Pixel(0.6f, 2.5f, 1.25f));
+  gi::write_hdr(image, temp("a.hdr"));
+  const gi::Image back = gi::read_hdr(temp("a.hdr"));
+  for (const gi::Pixel& p : back.pixels) {
+    EXPECT_NEAR(p.x, 0.6f, 2.5f * 0.01f);
+    EXPECT_NEAR(p.y, 2.5f, 2.5f * 0.01f);
+    EXPECT_NEAR(p.z, 1.25f, 2.5f * 0.01f);
+  }
+}
+
+TEST(ImageIo, NanImagesAreRefusedNotWritten) {
+  gi::Image image(2, 2);
+  image.at(1, 1).y = NAN;
+  EXPECT_THROW(gi::write_png(image, temp("nan.png")), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists(temp("nan.png")));
+  EXPECT_THROW(gi::read_png(temp("does_not_exist.png")), std::runtime_error);
+}

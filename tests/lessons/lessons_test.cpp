@@ -1,0 +1,94 @@
+// The lessons as a user runs them: options, exit status, outputs, determinism.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct LessonRun {
+  int status;
+  std::string output;  // stdout and stderr together
+};
+
+LessonRun run(const std::string& lesson, const std::string& args) {
+  const std::string command = std::string(GI_BIN_DIR) + "/" + lesson + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string output;
+  std::array<char, 4096> buffer;
+  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+std::string out_dir(const std::string& name) { return std::string(GI_WORK_DIR) + "/out/" + name; }
+
+std::string bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+const char* const lessons[] = {"01_rays", "02_recursive"};
+
+}  // namespace
+
+TEST(Lessons, HelpExitsZeroAndListsTheCommonOptions) {
+  for (const char* lesson : lessons) {
+    const LessonRun r = run(lesson, "--help");
+    EXPECT_EQ(r.status, 0) << lesson;
+    for (const char* option : {"--out", "--threads", "--seed", "--width", "--height", "--scene", "whitted"})
+      EXPECT_NE(r.output.find(option), std::string::npos) << lesson << " --help does not mention " << option;
+  }
+}
+
+TEST(Lessons, BadOptionsGiveOneLineAndStatusTwo) {
+  for (const char* lesson : lessons) {
+    for (const char* args : {"--width -3", "--bogus", "--width", "--scene nowhere", "--threads x", "--height nan"}) {
+      const LessonRun r = run(lesson, args);
+      EXPECT_EQ(r.status, 2) << lesson << " " << args;
+      EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << lesson << " " << args << ":\n" << r.output;
+      EXPECT_EQ(r.output.rfind(std::string(lesson) + ": error: ", 0), 0u) << r.output;
+    }
+  }
+}
+
+TEST(Lessons, RaysWritesItsTablesAndImages) {
+  const LessonRun r = run("01_rays", "--width 64 --height 48 --out " + out_dir("01"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("origin inside"), std::string::npos);
+  for (const char* file : {"hit_or_miss.png", "normals.png", "depth.png", "ray_sphere.csv", "ray_plane.csv"})
+    EXPECT_TRUE(fs::exists(out_dir("01") + "/" + file)) << file;
+}
+
+TEST(Lessons, RecursiveSweepWritesImagesTablesAndChart) {
+  const LessonRun r = run("02_recursive", "--width 48 --height 36 --max-depth 3 --reference-depth 6 --repeat 1 --out " +
+                                        out_dir("02"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("Contribution thresholds"), std::string::npos);
+  for (const char* file : {"depth_0.png", "depth_3.png", "reference.png", "diff_depth_1.png", "depth_limits.csv",
+                           "thresholds.csv", "rays_per_depth.csv", "error_vs_time.svg"})
+    EXPECT_TRUE(fs::exists(out_dir("02") + "/" + file)) << file;
+}
+
+TEST(Lessons, SameBytesForAnyThreadCount) {
+  for (const char* threads : {"1", "2", "5"}) {
+    const LessonRun r = run("02_recursive", std::string("--scene s10 --depth 8 --width 120 --height 90 --repeat 1 --threads ") +
+                                          threads + " --out " + out_dir(std::string("threads") + threads));
+    ASSERT_EQ(r.status, 0) << r.output;
+  }
+  const std::string one = bytes(out_dir("threads1") + "/s10_depth_8.png");
+  ASSERT_FALSE(one.empty());
+  EXPECT_EQ(bytes(out_dir("threads2") + "/s10_depth_8.png"), one);
+  EXPECT_EQ(bytes(out_dir("threads5") + "/s10_depth_8.png"), one);
+}

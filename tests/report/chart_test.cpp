@@ -1,0 +1,46 @@
+#include "gi/report/chart.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace {
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+}  // namespace
+
+TEST(Chart, LinearTicksAreOneTwoFiveSteps) {
+  EXPECT_EQ(gi::axis_ticks(0, 10, false), (std::vector<double>{0, 2, 4, 6, 8, 10}));
+  EXPECT_EQ(gi::axis_ticks(0, 0.7, false).size(), 8u);  // steps of 0.1
+  const auto ticks = gi::axis_ticks(13, 97, false);     // steps of 20 covering the range
+  EXPECT_LE(ticks.front(), 13);
+  EXPECT_GE(ticks.back(), 97);
+  EXPECT_DOUBLE_EQ(ticks[1] - ticks[0], 20);
+}
+
+TEST(Chart, LogTicksAreDecades) {
+  EXPECT_EQ(gi::axis_ticks(0.003, 2, true), (std::vector<double>{1e-3, 1e-2, 1e-1, 1, 10}));
+}
+
+TEST(Chart, OneLinePerSeriesLegendEscapedAndBadPointsSkipped) {
+  gi::Chart chart{"Error <vs> time", "ms", "RMSE", false, true, {}};
+  chart.series.push_back({"depth & more", {1, 2, 3}, {0.1, 0.0, 0.01}});  // 0 cannot sit on a log axis
+  chart.series.push_back({"threshold", {1, 2}, {NAN, 0.5}, gi::Mark::Points});
+  const std::string svg = gi::to_svg(chart);
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_EQ(count(svg, "<polyline"), 1);  // the second series has points only
+  EXPECT_NE(svg.find("Error &lt;vs&gt; time"), std::string::npos);
+  EXPECT_NE(svg.find("depth &amp; more"), std::string::npos);
+  EXPECT_EQ(count(svg, "<circle"), 2);  // two usable points of the first series
+  EXPECT_EQ(count(svg, "<rect x"), 2);  // plot frame + one usable point of the second
+}
+
+TEST(Chart, EmptyChartIsStillValid) {
+  const std::string svg = gi::to_svg(gi::Chart{"empty", "x", "y", true, true, {}});
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+}
