@@ -18,11 +18,13 @@ import regions  # noqa: E402
 
 
 def distinctive_lines(root, all_regions):
-    """Per region, the lines of its body that appear nowhere else in the project:
-    finding one of them in the kit means the solution leaked."""
+    """Per region, the lines of its body that appear in no other source code:
+    finding one of them anywhere in the kit means the solution leaked."""
     outside = set()
     in_region = {(r.path, i) for r in all_regions for i in range(r.begin + 1, r.end)}
     for rel in kit.project_files(root):
+        if rel.suffix not in regions.SOURCE_SUFFIXES:
+            continue  # docs quote the solution in excerpts; the kit must not, so they cannot vouch
         try:
             lines = (root / rel).read_text().splitlines()
         except UnicodeDecodeError:

@@ -75,6 +75,9 @@ void write_png(const Image& image, const std::filesystem::path& file, double exp
   for (const Pixel& p : image.pixels)
     for (int c = 0; c < 3; ++c) bytes.push_back(to_srgb8(tone_map(p[c], exposure, mapping)));
   make_parent(file);
+  // The "Sub" row filter for every row: rendered images compress about as well as
+  // with stb's per-row choice among all five filters, at two thirds of the time.
+  stbi_write_force_png_filter = 1;
   if (!stbi_write_png(file.string().c_str(), image.width, image.height, 3, bytes.data(), image.width * 3))
     throw std::runtime_error("cannot write " + file.string());
 }
