@@ -16,6 +16,7 @@
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/options.hpp"
+#include "gi/report/progress.hpp"
 #include "gi/report/table.hpp"
 #include "gi/scene/builtin_scenes.hpp"
 
@@ -39,11 +40,64 @@ std::vector<gi::Cell> ray_row(const gi::Cell& first, const gi::RenderResult& r, 
 }
 
 // Renders `repeat` times and keeps the run with the median time.
-gi::RenderResult render_median(const gi::Scene& scene, const gi::RenderSettings& settings, int repeat) {
+gi::RenderResult render_median(const gi::Scene& scene, const gi::RenderSettings& settings, int repeat,
+                               gi::Progress* progress = nullptr) {
   std::vector<gi::RenderResult> runs;
-  for (int i = 0; i < repeat; ++i) runs.push_back(gi::render(scene, settings));
+  for (int i = 0; i < repeat; ++i) {
+    runs.push_back(gi::render(scene, settings));
+    if (progress) progress->advance();
+  }
   std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
   return std::move(runs[runs.size() / 2]);
+}
+
+
+// One sweep of the lesson: a table row and a chart point per setting.
+struct Sweep {
+  gi::Table table;
+  gi::Series series;
+};
+
+// Depth limits 0..max_depth against the reference; writes each image.
+Sweep depth_sweep(const gi::Scene& scene, gi::RenderSettings settings, int max_depth, int repeat,
+                  const gi::RenderResult& reference, const std::string& out, gi::Progress& progress) {
+  Sweep sweep{gi::Table("Depth limits, scene " + scene.name + " (reference: depth " +
+                            std::to_string(settings.trace.max_depth) + ")",
+                        ray_columns("depth")),
+              {"depth limit 0.." + std::to_string(max_depth), {}, {}}};
+  for (int depth = 0; depth <= max_depth; ++depth) {
+    settings.trace.max_depth = depth;
+    const gi::RenderResult r = render_median(scene, settings, repeat, &progress);
+    sweep.table.add_row(ray_row(depth, r, &reference.image));
+    sweep.series.x.push_back(1e3 * r.seconds);
+    sweep.series.y.push_back(gi::rmse(r.image, reference.image));
+    gi::write_png(r.image, out + "/depth_" + std::to_string(depth) + ".png");
+    if (depth == 1) gi::write_png(gi::difference_image(r.image, reference.image), out + "/diff_depth_1.png");
+  }
+  return sweep;
+}
+
+// Contribution thresholds at the reference's depth limit.
+Sweep threshold_sweep(const gi::Scene& scene, gi::RenderSettings settings, const std::vector<double>& thresholds,
+                      int repeat, const gi::RenderResult& reference, gi::Progress& progress) {
+  Sweep sweep{gi::Table("Contribution thresholds at depth limit " + std::to_string(settings.trace.max_depth),
+                        ray_columns("threshold")),
+              {"contribution threshold", {}, {}}};
+  for (double threshold : thresholds) {
+    settings.trace.min_contribution = threshold;
+    const gi::RenderResult r = render_median(scene, settings, repeat, &progress);
+    sweep.table.add_row(ray_row(threshold, r, &reference.image));
+    sweep.series.x.push_back(1e3 * r.seconds);
+    sweep.series.y.push_back(gi::rmse(r.image, reference.image));
+  }
+  return sweep;
+}
+
+gi::Table rays_per_depth(const gi::RayCounts& counts) {
+  gi::Table table("Rays cast at each depth in the reference render", {{"depth"}, {"rays"}, {"share %", 2}});
+  for (int depth = 0; depth <= gi::RayCounts::max_depth && counts.at_depth(depth) > 0; ++depth)
+    table.add_row({depth, counts.at_depth(depth), 100.0 * counts.at_depth(depth) / counts.total()});
+  return table;
 }
 
 }  // namespace
@@ -83,52 +137,28 @@ int main(int argc, char** argv) {
       return 0;
     }
 
+    const std::vector<double> thresholds{0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.003, 0.001};
+    gi::Progress progress("rendering", 1 + (max_depth + 1 + static_cast<long long>(thresholds.size())) * repeat);
     settings.trace.max_depth = reference_depth;
     const gi::RenderResult reference = gi::render(scene, settings);
+    progress.advance();
     gi::write_png(reference.image, out + "/reference.png");
+    const Sweep depths = depth_sweep(scene, settings, max_depth, repeat, reference, out, progress);
+    const Sweep cutoffs = threshold_sweep(scene, settings, thresholds, repeat, reference, progress);
+    progress.finish();
 
-    gi::Table by_depth("Depth limits, scene " + scene_name + " (reference: depth " + std::to_string(reference_depth) + ")",
-                       ray_columns("depth"));
-    gi::Series depth_series{"depth limit 0.." + std::to_string(max_depth), {}, {}};
-    for (int depth = 0; depth <= max_depth; ++depth) {
-      settings.trace.max_depth = depth;
-      const gi::RenderResult r = render_median(scene, settings, repeat);
-      by_depth.add_row(ray_row(depth, r, &reference.image));
-      depth_series.x.push_back(1e3 * r.seconds);
-      depth_series.y.push_back(gi::rmse(r.image, reference.image));
-      gi::write_png(r.image, out + "/depth_" + std::to_string(depth) + ".png");
-      if (depth == 1) gi::write_png(gi::difference_image(r.image, reference.image), out + "/diff_depth_1.png");
+    const gi::Table per_depth = rays_per_depth(reference.counts);
+    for (const gi::Table* table : {&depths.table, &per_depth, &cutoffs.table}) {
+      table->print();
+      std::cout << '\n';
     }
-    by_depth.print();
-    by_depth.write_csv(out + "/depth_limits.csv");
-
-    gi::Table per_depth("Rays cast at each depth in the reference render", {{"depth"}, {"rays"}, {"share %", 2}});
-    for (int depth = 0; depth <= reference_depth && reference.counts.at_depth(depth) > 0; ++depth)
-      per_depth.add_row({depth, reference.counts.at_depth(depth),
-                         100.0 * reference.counts.at_depth(depth) / reference.counts.total()});
-    std::cout << '\n';
-    per_depth.print();
+    depths.table.write_csv(out + "/depth_limits.csv");
     per_depth.write_csv(out + "/rays_per_depth.csv");
-
-    gi::Table by_threshold("Contribution thresholds at depth limit " + std::to_string(reference_depth),
-                           ray_columns("threshold"));
-    gi::Series threshold_series{"contribution threshold", {}, {}};
-    for (double threshold : {0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.003, 0.001}) {
-      settings.trace.max_depth = reference_depth;
-      settings.trace.min_contribution = threshold;
-      const gi::RenderResult r = render_median(scene, settings, repeat);
-      by_threshold.add_row(ray_row(threshold, r, &reference.image));
-      threshold_series.x.push_back(1e3 * r.seconds);
-      threshold_series.y.push_back(gi::rmse(r.image, reference.image));
-    }
-    std::cout << '\n';
-    by_threshold.print();
-    by_threshold.write_csv(out + "/thresholds.csv");
-
-    gi::Chart chart{"Stopping recursion: error against time (" + scene_name + ")", "render time (ms)",
-                    "RMSE against the reference", false, true, {depth_series, threshold_series}};
+    cutoffs.table.write_csv(out + "/thresholds.csv");
+    const gi::Chart chart{"Stopping recursion: error against time (" + scene_name + ")", "render time (ms)",
+                          "RMSE against the reference", false, true, {depths.series, cutoffs.series}};
     gi::write_svg(chart, out + "/error_vs_time.svg");
-    std::cout << "\nimages and charts: " << out << "/\n";
+    std::cout << "images and charts: " << out << "/\n";
     return 0;
   });
 }
