@@ -54,3 +54,13 @@ TEST(ImageIo, NanImagesAreRefusedNotWritten) {
   EXPECT_FALSE(std::filesystem::exists(temp("nan.png")));
   EXPECT_THROW(gi::read_png(temp("does_not_exist.png")), std::runtime_error);
 }
+
+TEST(ImageIo, PfmRoundTripIsExact) {
+  const gi::Image image = ramp();
+  gi::write_pfm(image, temp("ramp.pfm"));
+  const gi::Image back = gi::read_pfm(temp("ramp.pfm"));
+  ASSERT_TRUE(back.same_size(image));
+  EXPECT_EQ(back.pixels, image.pixels);
+  gi::write_png(image, temp("not_a.pfm"));
+  EXPECT_THROW(gi::read_pfm(temp("not_a.pfm")), std::runtime_error);
+}

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -109,6 +111,33 @@ Image read_png(const std::filesystem::path& file) {
   for (std::size_t i = 0; i < image.pixels.size(); ++i)
     image.pixels[i] = Pixel(from_srgb8(data.get()[3 * i]), from_srgb8(data.get()[3 * i + 1]),
                             from_srgb8(data.get()[3 * i + 2]));
+  return image;
+}
+
+static_assert(sizeof(Pixel) == 3 * sizeof(float), "PFM stores pixels as three packed floats");
+
+// PFM: "PF\n<width> <height>\n-1\n" (negative scale: little-endian), then float RGB
+// rows from the bottom of the image up.
+void write_pfm(const Image& image, const std::filesystem::path& file) {
+  make_parent(file);
+  std::ofstream out(file, std::ios::binary);
+  out << "PF\n" << image.width << ' ' << image.height << "\n-1\n";
+  for (int y = image.height - 1; y >= 0; --y)
+    out.write(reinterpret_cast<const char*>(&image.at(0, y)), sizeof(Pixel) * image.width);
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+Image read_pfm(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string magic;
+  int w = 0, h = 0;
+  double scale = 0;
+  in >> magic >> w >> h >> scale;
+  in.get();  // the single white-space character before the data
+  if (!in || magic != "PF" || scale >= 0) throw std::runtime_error(file.string() + " is not a little-endian RGB PFM");
+  Image image(w, h);
+  for (int y = h - 1; y >= 0; --y) in.read(reinterpret_cast<char*>(&image.at(0, y)), sizeof(Pixel) * w);
+  if (!in) throw std::runtime_error(file.string() + " is truncated");
   return image;
 }
 

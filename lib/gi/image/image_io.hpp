@@ -29,4 +29,9 @@ void write_hdr(const Image& image, const std::filesystem::path& file);
 Image read_hdr(const std::filesystem::path& file);
 Image read_png(const std::filesystem::path& file);  // decoded back to linear
 
+// Portable Float Map: the exact float values, for cached reference images that
+// later errors are measured against (RGBE's 1% steps would floor those errors).
+void write_pfm(const Image& image, const std::filesystem::path& file);
+Image read_pfm(const std::filesystem::path& file);  // throws std::runtime_error if malformed
+
 }  // namespace gi

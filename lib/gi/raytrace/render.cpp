@@ -24,6 +24,7 @@ void check(const RenderSettings& s) {
     throw std::invalid_argument("render: the contribution threshold must lie in [0, 1]");
   if (!(s.trace.epsilon > 0 && s.trace.epsilon < 1))
     throw std::invalid_argument("render: epsilon must lie in (0, 1)");
+  check(s.sampling);
 }
 
 RenderResult render(const Scene& scene, const RenderSettings& settings) {
@@ -32,18 +33,23 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
   const int tiles_x = (settings.width + tile_size - 1) / tile_size;
   const int tiles_y = (settings.height + tile_size - 1) / tile_size;
 
-  RenderResult result{Image(settings.width, settings.height), {}, 0};
+  RenderResult result{Image(settings.width, settings.height), {}, {}, 0};
+  result.samples.assign(result.image.pixels.size(), 0);
   std::vector<RayCounts> tile_counts(static_cast<std::size_t>(tiles_x) * tiles_y);
   const Timer timer;
   parallel_for(tiles_x * tiles_y, settings.threads, [&](int tile) {
     RayCounts& counts = tile_counts[tile];
     const int x0 = (tile % tiles_x) * tile_size;
     const int y0 = (tile / tiles_x) * tile_size;
+    const std::function<Color(double, double)> radiance = [&](double px, double py) {
+      counts.count(RayKind::Primary, 0);
+      return trace(scene, primary_ray(frame, px, py), settings.trace, counts);
+    };
     for (int y = y0; y < std::min(y0 + tile_size, settings.height); ++y) {
       for (int x = x0; x < std::min(x0 + tile_size, settings.width); ++x) {
-        counts.count(RayKind::Primary, 0);
-        const Color c = trace(scene, primary_ray(frame, x + 0.5, y + 0.5), settings.trace, counts);
-        result.image.at(x, y) = Pixel(c);
+        const std::size_t pixel = static_cast<std::size_t>(y) * settings.width + x;
+        Rng rng(settings.seed, pixel);
+        result.image.pixels[pixel] = Pixel(sample_pixel(settings.sampling, x, y, rng, radiance, result.samples[pixel]));
       }
     }
   });

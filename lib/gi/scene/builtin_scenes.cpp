@@ -108,14 +108,41 @@ Scene s10() {
   return s;
 }
 
+// Everything that aliases: a black-and-white checkerboard receding to the horizon
+// (moire), thin poles and a wire narrower than a pixel, and sharp shadow edges.
+Scene aliasing() {
+  Scene s;
+  s.name = "aliasing";
+  s.background = Color(0.55, 0.7, 0.9);
+  s.ambient_light = Color(1.0);
+  Material board = phong_plastic("checkerboard", Color(1.0), 1);
+  board.specular = Color(0.0);
+  board.checker_size = 1.0;
+  board.checker_diffuse = Color(0.02);
+  const int floor = s.add(board);
+  Material pole = phong_plastic("pole", Color(0.9, 0.25, 0.1), 20);
+  const int poles = s.add(pole);
+  s.add(Plane{{0, 0, 0}, {0, 1, 0}, floor});
+  for (int i = 0; i < 6; ++i) {  // poles 3 cm wide, ever farther away
+    const double z = -3.0 - 2.5 * i, x = (i % 2 ? 1.2 : -1.2) + 0.1 * i;
+    s.add(Quad{{x, 0, z}, {0.03, 0, 0}, {0, 2.2, 0}, poles});
+  }
+  s.add(Quad{{-6, 1.9, -9}, {12, 0, 0}, {0, 0.01, 0}, poles});  // a wire, 1 cm thick
+  s.add(Sphere{{0.4, 0.6, -5}, 0.6, s.add(phong_plastic("ball", Color(0.2, 0.4, 0.9), 40))});
+  s.add(PointLight{{-4, 6, 2}, Color(0.8)});
+  s.camera = Camera{{0, 1.2, 1.5}, {0, 0.7, -8}, {0, 1, 0}, 50};
+  return s;
+}
+
 }  // namespace
 
-std::vector<std::string> scene_names() { return {"whitted", "spheres", "s10"}; }
+std::vector<std::string> scene_names() { return {"whitted", "spheres", "s10", "aliasing"}; }
 
 Scene make_scene(const std::string& name) {
   if (name == "whitted") return whitted();
   if (name == "spheres") return spheres();
   if (name == "s10") return s10();
+  if (name == "aliasing") return aliasing();
   std::string known;
   for (const std::string& n : scene_names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown scene '" + name + "' (built-in scenes: " + known + ")");

@@ -12,6 +12,7 @@ namespace gi {
 //   spheres  three shaded spheres on a grey floor, one light: the simplest picture
 //   s10      ten spheres on a checkered plane, two lights, a mirror and a glass
 //            sphere: the same scene as ../shared/peers/tachyon-s10.dat, for timing
+//   aliasing a checkerboard to the horizon, poles and a wire thinner than a pixel
 std::vector<std::string> scene_names();
 
 // Throws std::invalid_argument naming the known scenes when `name` is not one.
