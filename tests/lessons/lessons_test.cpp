@@ -39,7 +39,7 @@ std::string bytes(const fs::path& file) {
   return s.str();
 }
 
-const char* const lessons[] = {"01_rays", "02_recursive"};
+const char* const lessons[] = {"01_rays", "02_recursive", "03_antialiasing"};
 
 }  // namespace
 
@@ -79,6 +79,16 @@ TEST(Lessons, RecursiveSweepWritesImagesTablesAndChart) {
   for (const char* file : {"depth_0.png", "depth_3.png", "reference.png", "diff_depth_1.png", "depth_limits.csv",
                            "thresholds.csv", "rays_per_depth.csv", "error_vs_time.svg"})
     EXPECT_TRUE(fs::exists(out_dir("02") + "/" + file)) << file;
+}
+
+TEST(Lessons, AntialiasingWritesTablesCropsHeatMapAndChart) {
+  const LessonRun r = run("03_antialiasing", "--width 48 --height 36 --depth 1 --reference-n 6 --out " + out_dir("03"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("jittered 4x4"), std::string::npos);
+  EXPECT_NE(r.output.find("pixels split"), std::string::npos);
+  for (const char* file : {"centre.png", "jittered_4x4.png", "edge_crops.png", "adaptive_samples_heatmap.png",
+                           "antialiasing.csv", "adaptive.csv", "error_vs_time.svg", "reference.png"})
+    EXPECT_TRUE(fs::exists(out_dir("03") + "/" + file)) << file;
 }
 
 TEST(Lessons, SameBytesForAnyThreadCount) {

@@ -1,0 +1,65 @@
+// Graded tests of exercise 3.2: Whitted's adaptive subdivision decision. One point
+// per test. The corners of a square "differ" when any corner's radiance is more than
+// the threshold away from the mean of the four, in any colour channel.
+#include <gtest/gtest.h>
+
+#include "gi/raytrace/adaptive.hpp"
+#include "gi/raytrace/pixel_samplers.hpp"
+
+using gi::Color;
+
+TEST(Ex3_2_Adaptive, EqualCornersAreNotSplit) {
+  EXPECT_FALSE(gi::should_subdivide({Color(0.3), Color(0.3), Color(0.3), Color(0.3)}, 0.1))
+      << "four equal corners need no more samples";
+}
+
+TEST(Ex3_2_Adaptive, BrightCornersAreNotSplitJustForBeingBright) {
+  EXPECT_FALSE(gi::should_subdivide({Color(3.0), Color(3.0), Color(3.0), Color(3.0)}, 0.1))
+      << "compare the corners with each other (their mean), not with zero";
+}
+
+TEST(Ex3_2_Adaptive, AnEdgeIsSplit) {
+  EXPECT_TRUE(gi::should_subdivide({Color(0.0), Color(1.0), Color(0.0), Color(1.0)}, 0.1))
+      << "corners 0 and 1 straddle an edge: subdivide";
+}
+
+TEST(Ex3_2_Adaptive, SmallDifferencesAreNotSplit) {
+  EXPECT_FALSE(gi::should_subdivide({Color(0.50), Color(0.55), Color(0.50), Color(0.55)}, 0.1))
+      << "the corners are within 0.025 of their mean, below the threshold 0.1";
+}
+
+TEST(Ex3_2_Adaptive, ADarkerCornerCountsToo) {
+  // Mean 0.875: three corners are 0.125 above it, one is 0.375 below.
+  EXPECT_TRUE(gi::should_subdivide({Color(1.0), Color(1.0), Color(1.0), Color(0.5)}, 0.2))
+      << "one corner is 0.375 darker than the mean: take the absolute difference";
+}
+
+TEST(Ex3_2_Adaptive, EveryColourChannelCounts) {
+  EXPECT_TRUE(gi::should_subdivide({Color(0.2, 0.2, 0.0), Color(0.2, 0.2, 1.0), Color(0.2, 0.2, 0.0),
+                                    Color(0.2, 0.2, 1.0)},
+                                   0.1))
+      << "the corners differ in blue only (a red-green edge in a blue world): check every channel";
+}
+
+TEST(Ex3_2_Adaptive, TheThresholdIsStrict) {
+  // Mean 0.5, every corner exactly 0.5 away: representable, so no round-off.
+  EXPECT_FALSE(gi::should_subdivide({Color(0.0), Color(1.0), Color(0.0), Color(1.0)}, 0.5))
+      << "subdivide when the difference is MORE than the threshold, not equal to it";
+  EXPECT_TRUE(gi::should_subdivide({Color(0.0), Color(1.0), Color(0.0), Color(1.0)}, 0.49));
+}
+
+TEST(Ex3_2_Adaptive, CompareWithTheMeanNotTheFirstCorner) {
+  // Mean 0.1125: corner 0 is 0.1125 below it, the others 0.0375 above: no split at 0.12,
+  // though corners 0 and 1 differ by 0.15.
+  EXPECT_FALSE(gi::should_subdivide({Color(0.0), Color(0.15), Color(0.15), Color(0.15)}, 0.12))
+      << "measure each corner against the mean of the four, as the handout defines it";
+}
+
+TEST(Ex3_2_Adaptive, DrivesTheAdaptiveSamplerOnAnEdge) {
+  // A vertical edge at x = 0.3 through the pixel. Two levels: the pixel splits (5 new
+  // samples), its two left quarters straddle the edge and split again (5 each).
+  const auto edge = [](gi::vec2 p) { return Color(p.x >= 0.3 ? 1.0 : 0.0); };
+  const gi::AdaptiveSample a = gi::adaptive_sample(edge, 0.1, 2);
+  EXPECT_EQ(a.samples, 19) << "4 corners + 5 (pixel) + 5 + 5 (the two quarters the edge crosses)";
+  EXPECT_NEAR(a.colour.x, 0.625, 1e-12);
+}
