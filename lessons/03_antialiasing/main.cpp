@@ -3,7 +3,6 @@
 // supersampling, at several sample budgets, each measured against a reference
 // made with many jittered samples. Error against time, per method.
 #include <algorithm>
-#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -11,7 +10,7 @@
 #include "gi/image/diff.hpp"
 #include "gi/image/image_io.hpp"
 #include "gi/image/metrics.hpp"
-#include "gi/raytrace/render.hpp"
+#include "gi/raytrace/reference.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/options.hpp"
@@ -40,14 +39,12 @@ std::vector<Method> methods() {
 
 // The reference: many jittered samples per pixel, computed once and kept in out/.
 gi::Image reference_image(const gi::Scene& scene, gi::RenderSettings settings, int n, const std::string& out) {
+  settings.sampling = {gi::Sampler::Jittered, n};
+  settings.seed += 1000;  // independent of the jittered runs being measured
   const std::string file = out + "/reference_" + scene.name + "_" + std::to_string(settings.width) + "x" +
                            std::to_string(settings.height) + "_jittered" + std::to_string(n) + "_depth" +
                            std::to_string(settings.trace.max_depth) + "_seed" + std::to_string(settings.seed) + ".pfm";
-  if (std::filesystem::exists(file)) return gi::read_pfm(file);
-  settings.sampling = {gi::Sampler::Jittered, n};
-  settings.seed += 1000;  // independent of the jittered runs being measured
-  const gi::Image reference = gi::render(scene, settings).image;
-  gi::write_pfm(reference, file);
+  const gi::Image reference = gi::cached_reference(scene, settings, file);
   gi::write_png(reference, out + "/reference.png");
   return reference;
 }

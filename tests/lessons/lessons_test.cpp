@@ -39,7 +39,7 @@ std::string bytes(const fs::path& file) {
   return s.str();
 }
 
-const char* const lessons[] = {"01_rays", "02_recursive", "03_antialiasing"};
+const char* const lessons[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows"};
 
 }  // namespace
 
@@ -47,8 +47,11 @@ TEST(Lessons, HelpExitsZeroAndListsTheCommonOptions) {
   for (const char* lesson : lessons) {
     const LessonRun r = run(lesson, "--help");
     EXPECT_EQ(r.status, 0) << lesson;
-    for (const char* option : {"--out", "--threads", "--seed", "--width", "--height", "--scene", "whitted"})
+    for (const char* option : {"--out", "--threads", "--seed", "--width", "--height"})
       EXPECT_NE(r.output.find(option), std::string::npos) << lesson << " --help does not mention " << option;
+    if (std::string(lesson) != "04_soft_shadows") {  // its scene is made for its measurement
+      EXPECT_NE(r.output.find("whitted"), std::string::npos) << lesson << " --help does not list the scenes";
+    }
   }
 }
 
@@ -89,6 +92,16 @@ TEST(Lessons, AntialiasingWritesTablesCropsHeatMapAndChart) {
   for (const char* file : {"centre.png", "jittered_4x4.png", "edge_crops.png", "adaptive_samples_heatmap.png",
                            "antialiasing.csv", "adaptive.csv", "error_vs_time.svg", "reference.png"})
     EXPECT_TRUE(fs::exists(out_dir("03") + "/" + file)) << file;
+}
+
+TEST(Lessons, SoftShadowsMeasuresThePenumbraAndWritesImages) {
+  const LessonRun r = run("04_soft_shadows", "--width 40 --height 30 --reference-n 6 --out " + out_dir("04"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("Penumbra"), std::string::npos);
+  EXPECT_NE(r.output.find("centre (hard)"), std::string::npos);
+  for (const char* file : {"penumbra_by_light_size.png", "hard.png", "jittered_16.png", "shadow_crops.png",
+                           "reference.png", "penumbra.csv", "shadow_rays.csv", "error_vs_time.svg"})
+    EXPECT_TRUE(fs::exists(out_dir("04") + "/" + file)) << file;
 }
 
 TEST(Lessons, SameBytesForAnyThreadCount) {

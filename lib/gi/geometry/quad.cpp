@@ -8,6 +8,13 @@ vec3 normal(const Quad& quad) { return normalize(cross(quad.edge_u, quad.edge_v)
 double area(const Quad& quad) { return length(cross(quad.edge_u, quad.edge_v)); }
 vec3 centre(const Quad& quad) { return quad.corner + 0.5 * (quad.edge_u + quad.edge_v); }
 
+std::array<Quad, 6> box_quads(const vec3& lo, const vec3& hi, int material) {
+  const vec3 dx(hi.x - lo.x, 0, 0), dy(0, hi.y - lo.y, 0), dz(0, 0, hi.z - lo.z);
+  return {Quad{lo, dz, dy, material},      Quad{lo + dx, dy, dz, material},  // -x, +x
+          Quad{lo, dx, dz, material},      Quad{lo + dy, dz, dx, material},  // -y, +y
+          Quad{lo, dy, dx, material},      Quad{lo + dz, dx, dy, material}}; // -z, +z
+}
+
 void check(const Quad& quad) {
   if (!is_finite(quad.corner) || !is_finite(quad.edge_u) || !is_finite(quad.edge_v))
     throw std::invalid_argument("quad: corner and edges must be finite");

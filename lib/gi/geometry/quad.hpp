@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <optional>
 
 #include "gi/core/ray.hpp"
@@ -21,6 +22,9 @@ void check(const Quad& quad);
 vec3 normal(const Quad& quad);
 double area(const Quad& quad);
 vec3 centre(const Quad& quad);
+
+// The six faces of the axis-aligned box [lo, hi], normals pointing out.
+std::array<Quad, 6> box_quads(const vec3& lo, const vec3& hi, int material);
 
 // The hit with t in [ray.t_min, ray.t_max] inside the parallelogram, or nothing.
 std::optional<Hit> intersect(const Ray& ray, const Quad& quad);

@@ -25,6 +25,7 @@ void check(const RenderSettings& s) {
   if (!(s.trace.epsilon > 0 && s.trace.epsilon < 1))
     throw std::invalid_argument("render: epsilon must lie in (0, 1)");
   check(s.sampling);
+  check(s.trace.soft_shadows);
 }
 
 RenderResult render(const Scene& scene, const RenderSettings& settings) {
@@ -39,16 +40,17 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
   const Timer timer;
   parallel_for(tiles_x * tiles_y, settings.threads, [&](int tile) {
     RayCounts& counts = tile_counts[tile];
+    Rng rng;  // re-seeded for every pixel below
     const int x0 = (tile % tiles_x) * tile_size;
     const int y0 = (tile / tiles_x) * tile_size;
     const std::function<Color(double, double)> radiance = [&](double px, double py) {
       counts.count(RayKind::Primary, 0);
-      return trace(scene, primary_ray(frame, px, py), settings.trace, counts);
+      return trace(scene, primary_ray(frame, px, py), settings.trace, counts, rng);
     };
     for (int y = y0; y < std::min(y0 + tile_size, settings.height); ++y) {
       for (int x = x0; x < std::min(x0 + tile_size, settings.width); ++x) {
         const std::size_t pixel = static_cast<std::size_t>(y) * settings.width + x;
-        Rng rng(settings.seed, pixel);
+        rng = Rng(settings.seed, pixel);
         result.image.pixels[pixel] = Pixel(sample_pixel(settings.sampling, x, y, rng, radiance, result.samples[pixel]));
       }
     }

@@ -1,6 +1,8 @@
 #pragma once
 #include "gi/core/ray.hpp"
+#include "gi/core/rng.hpp"
 #include "gi/raytrace/ray_counts.hpp"
+#include "gi/raytrace/soft_shadows.hpp"
 #include "gi/scene/scene.hpp"
 
 namespace gi {
@@ -12,13 +14,15 @@ struct TraceSettings {
   int max_depth = 8;               // 0: eye rays and shadow rays only
   double min_contribution = 0.0;   // 0: never stop early
   double epsilon = 1e-6;           // how far secondary rays start off a surface (scene units)
+  SoftShadowSettings soft_shadows;  // shadow rays per area light (lesson 04)
 };
 
 // Whitted's recursive ray tracer. Returns the radiance seen along `ray`:
 //   I = k_a I_a + sum_l S_l I_l [k_d N.L + k_s (R.V)^n] + k_r I_r + k_t I_t
 // `depth` is the number of reflections/refractions that led to this ray and
-// `contribution` how much of it reaches the pixel. Counts every ray it casts.
-Color trace(const Scene& scene, const Ray& ray, const TraceSettings& settings, RayCounts& counts, int depth = 0,
-            const Color& contribution = Color(1.0));
+// `contribution` how much of it reaches the pixel. Counts every ray it casts; `rng`
+// places the shadow rays on area lights.
+Color trace(const Scene& scene, const Ray& ray, const TraceSettings& settings, RayCounts& counts, Rng& rng,
+            int depth = 0, const Color& contribution = Color(1.0));
 
 }  // namespace gi

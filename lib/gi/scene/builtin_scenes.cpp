@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "gi/scene/soft_shadow_scene.hpp"
+
 namespace gi {
 
 namespace {
@@ -136,13 +138,14 @@ Scene aliasing() {
 
 }  // namespace
 
-std::vector<std::string> scene_names() { return {"whitted", "spheres", "s10", "aliasing"}; }
+std::vector<std::string> scene_names() { return {"whitted", "spheres", "s10", "aliasing", "soft"}; }
 
 Scene make_scene(const std::string& name) {
   if (name == "whitted") return whitted();
   if (name == "spheres") return spheres();
   if (name == "s10") return s10();
   if (name == "aliasing") return aliasing();
+  if (name == "soft") return soft_shadow_scene(1.0);
   std::string known;
   for (const std::string& n : scene_names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown scene '" + name + "' (built-in scenes: " + known + ")");

@@ -13,6 +13,7 @@ namespace gi {
 //   s10      ten spheres on a checkered plane, two lights, a mirror and a glass
 //            sphere: the same scene as ../shared/peers/tachyon-s10.dat, for timing
 //   aliasing a checkerboard to the horizon, poles and a wire thinner than a pixel
+//   soft     a box, a ball and a pole under a 1 x 1 area light (soft_shadow_scene.hpp)
 std::vector<std::string> scene_names();
 
 // Throws std::invalid_argument naming the known scenes when `name` is not one.

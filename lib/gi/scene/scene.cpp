@@ -54,11 +54,18 @@ void Scene::add(const PointLight& light) {
   lights.push_back(light);
 }
 
+void Scene::add(const QuadLight& light) {
+  check(light.shape);
+  if (!is_finite(light.intensity)) throw std::invalid_argument("area light: intensity must be finite");
+  area_lights.push_back(light);
+}
+
 void check(const Scene& scene) {
   for (const Material& m : scene.materials) check(m);
   for (const Sphere& s : scene.spheres) check(s), check_material_index(scene, s.material);
   for (const Plane& p : scene.planes) check(p), check_material_index(scene, p.material);
   for (const Quad& q : scene.quads) check(q), check_material_index(scene, q.material);
+  for (const QuadLight& l : scene.area_lights) check(l.shape);
   (void)camera_frame(scene.camera, 1, 1);  // throws for a degenerate camera
 }
 

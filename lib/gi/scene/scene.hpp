@@ -20,6 +20,7 @@ struct Scene {
   std::vector<Plane> planes;
   std::vector<Quad> quads;
   std::vector<PointLight> lights;
+  std::vector<QuadLight> area_lights;  // lesson 04; add an emitting quad too if the camera should see it
   Color background{0.0};     // radiance of rays that hit nothing
   Color ambient_light{0.0};  // I_a of the Phong model
   Camera camera;
@@ -31,6 +32,7 @@ struct Scene {
   void add(const Plane& plane);
   void add(const Quad& quad);
   void add(const PointLight& light);
+  void add(const QuadLight& light);
 
   std::size_t primitive_count() const { return spheres.size() + planes.size() + quads.size(); }
 };

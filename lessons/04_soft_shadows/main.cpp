@@ -1,0 +1,147 @@
+// Lesson 04 -- soft shadows: an area light sampled by jittered (or random) shadow
+// rays. The penumbra grows with the light as similar triangles predict; the noise
+// falls with the number of shadow rays, faster when they are jittered.
+#include <algorithm>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "gi/image/diff.hpp"
+#include "gi/image/image_io.hpp"
+#include "gi/image/metrics.hpp"
+#include "gi/raytrace/reference.hpp"
+#include "gi/raytrace/shading.hpp"
+#include "gi/report/chart.hpp"
+#include "gi/report/lesson.hpp"
+#include "gi/report/options.hpp"
+#include "gi/report/progress.hpp"
+#include "gi/report/table.hpp"
+#include "gi/scene/soft_shadow_scene.hpp"
+
+namespace {
+
+// The part of the area light seen from the floor point (x, 0, 0), by 32 x 32
+// jittered shadow rays.
+double visible_fraction(const gi::Scene& scene, double x, gi::Rng& rng) {
+  const gi::vec3 point(x, 0, 0), up(0, 1, 0);
+  const auto reaches = [&](const gi::vec3& y) { return gi::visible(scene, point, up, y, 1e-6); };
+  const auto one = [](const gi::vec3&) { return gi::Color(1.0); };
+  const auto samples = gi::light_samples({gi::LightSampling::Jittered, 32}, rng);
+  return gi::soft_shadow_estimate(scene.area_lights.front(), samples, reaches, one).x;
+}
+
+// Width of the penumbra of the box's edge on the floor along z = 0: where the visible
+// fraction rises from 10% to 90%, scaled by 1/0.8 to the whole ramp.
+double measured_penumbra(const gi::Scene& scene, gi::Rng& rng) {
+  if (scene.area_lights.empty()) return 0;
+  double x10 = 0, x90 = 0;
+  const double step = 0.002;
+  for (double x = 1.2; x < 3.2; x += step) {
+    const double f = visible_fraction(scene, x, rng);
+    if (f < 0.1) x10 = x + step;
+    if (f < 0.9) x90 = x + step;
+  }
+  return (x90 - x10) / 0.8;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return gi::run_lesson("04_soft_shadows", [&] {
+    gi::CommonOptions common;
+    gi::RenderSettings settings;
+    settings.width = 320;
+    settings.height = 240;
+    settings.trace.max_depth = 1;
+    double light_size = 1.0;
+    int reference_n = 24;
+    gi::Options options("04_soft_shadows", "Soft shadows: an area light sampled with random and jittered shadow "
+                                           "rays, against a many-ray reference; penumbra against light size.");
+    gi::add_common_options(options, common, "04_soft_shadows");
+    options.add("--width", settings.width, "image width in pixels", 16, 4096)
+        .add("--height", settings.height, "image height in pixels", 16, 4096)
+        .add("--light-size", light_size, "side of the square area light (scene units)", 0.05, 4.0)
+        .add("--reference-n", reference_n, "reference: jittered n x n shadow rays per hit", 4, 64);
+    if (!options.parse(argc, argv)) return 0;
+    settings.threads = common.threads;
+    settings.seed = common.seed;
+    const std::string out = common.out;
+    gi::Rng rng(common.seed, 7);
+
+    // 1. The penumbra against the light's size, measured on the floor and rendered.
+    gi::Table penumbra("Penumbra of the box's edge against light size (similar triangles: w = s h / (H - h))",
+                       {{"light size s", 2}, {"predicted w", 3}, {"measured w", 3}, {"shadow rays/hit"}});
+    std::vector<gi::Image> strip;
+    for (double s : {0.0, 0.25, 0.5, 1.0, 2.0}) {
+      const gi::Scene scene = gi::soft_shadow_scene(s);
+      const double predicted = s * gi::soft_shadow_box_height / (gi::soft_shadow_light_height - gi::soft_shadow_box_height);
+      settings.trace.soft_shadows = {gi::LightSampling::Jittered, 8};
+      penumbra.add_row({s, predicted, measured_penumbra(scene, rng), s == 0 ? 1 : 64});
+      strip.push_back(gi::render(scene, settings).image);
+      gi::write_png(strip.back(), out + "/light_size_" + gi::format_number(s, 2, gi::Format::Fixed) + ".png");
+    }
+    gi::write_png(gi::side_by_side(strip), out + "/penumbra_by_light_size.png");
+
+    // 2. Shadow rays per hit against noise and time, for one light size.
+    const gi::Scene scene = gi::soft_shadow_scene(light_size);
+    gi::RenderSettings reference_settings = settings;
+    reference_settings.trace.soft_shadows = {gi::LightSampling::Jittered, reference_n};
+    reference_settings.seed += 1000;  // independent of the runs being measured
+    const gi::Image reference = gi::cached_reference(
+        scene, reference_settings,
+        out + "/reference_" + std::to_string(settings.width) + "x" + std::to_string(settings.height) + "_light" +
+            gi::format_number(light_size, 3, gi::Format::Fixed) + "_jittered" + std::to_string(reference_n) +
+            "_seed" + std::to_string(reference_settings.seed) + ".pfm");
+    gi::write_png(reference, out + "/reference.png");
+
+    gi::Table table("Shadow rays per hit, light size " + gi::format_number(light_size, 2, gi::Format::Fixed) +
+                        ", against jittered " + std::to_string(reference_n) + "x" + std::to_string(reference_n),
+                    {{"sampling"}, {"rays/hit"}, {"shadow rays"}, {"ms", 1}, {"RMSE", 2, gi::Format::Scientific},
+                     {"PSNR dB", 1}});
+    std::vector<gi::Series> curves;
+    std::vector<gi::Image> crops;
+    // The box and its shadow, enlarged 3x.
+    const int cw = settings.width * 34 / 100, ch = settings.height * 31 / 100;
+    const int cx = settings.width * 47 / 100, cy = settings.height * 31 / 100;
+    auto crop = [&](const gi::Image& image) { return gi::enlarge(gi::crop(image, cx, cy, cw, ch), 3); };
+
+    std::vector<gi::SoftShadowSettings> runs{{gi::LightSampling::Centre, 1}};
+    for (gi::LightSampling m : {gi::LightSampling::Random, gi::LightSampling::Jittered})
+      for (int n : {1, 2, 3, 4, 6, 8}) runs.push_back({m, n});
+    gi::Progress progress("rendering", static_cast<long long>(runs.size()));
+    for (const gi::SoftShadowSettings& run : runs) {
+      settings.trace.soft_shadows = run;
+      const gi::RenderResult r = gi::render(scene, settings);
+      progress.advance();
+      const std::string name = gi::light_sampling_name(run.sampling);
+      const double error = gi::rmse(r.image, reference);
+      table.add_row({run.sampling == gi::LightSampling::Centre ? "centre (hard)" : name, run.n * run.n,
+                     r.counts.of(gi::RayKind::Shadow), 1e3 * r.seconds, error, gi::psnr(r.image, reference)});
+      if (run.sampling != gi::LightSampling::Centre) {
+        if (curves.empty() || curves.back().name != name) curves.push_back({name, {}, {}});
+        curves.back().x.push_back(1e3 * r.seconds);
+        curves.back().y.push_back(error);
+      }
+      if (run.n == 1 || run.n == 4) {
+        const std::string label = run.sampling == gi::LightSampling::Centre ? "hard" : name + "_" + std::to_string(run.n * run.n);
+        gi::write_png(r.image, out + "/" + label + ".png");
+        crops.push_back(crop(r.image));
+      }
+    }
+    progress.finish();
+    crops.push_back(crop(reference));
+    gi::write_png(gi::side_by_side(crops), out + "/shadow_crops.png");
+
+    penumbra.print();
+    std::cout << '\n';
+    table.print();
+    penumbra.write_csv(out + "/penumbra.csv");
+    table.write_csv(out + "/shadow_rays.csv");
+    gi::write_svg({"Soft shadows: error against time", "render time (ms)", "RMSE against the reference", true, true,
+                   curves},
+                  out + "/error_vs_time.svg");
+    std::cout << "\nimages and charts: " << out << "/ (shadow_crops.png: hard, random 1, random 16, jittered 1, "
+              << "jittered 16, reference)\n";
+    return 0;
+  });
+}
