@@ -1,0 +1,33 @@
+#pragma once
+#include <array>
+
+#include "gi/radiosity/polygon.hpp"
+
+namespace gi {
+
+// The lecture's differential form factor, applied from centre to centre:
+//   F_ij ~ cos(theta_i) cos(theta_j) / (pi r^2) * A_j * H_ij
+// theta_i is the angle at x_i between n_i and the line to x_j, theta_j the angle at
+// x_j between n_j and the line back; H_ij in [0, 1] is the visibility. Zero when
+// either surface faces away from the other. Good when r is large against the patch
+// sizes; wrong (even above 1) as the patches approach.
+double form_factor_differential(const vec3& x_i, const vec3& n_i, const vec3& x_j, const vec3& n_j, double area_j,
+                                double visibility);
+
+// The form factor from a differential area at x (unit normal n) to a polygon, by
+// Lambert's contour integral (exact, no occlusion):
+//   F = 1/(2 pi) sum over edges k of gamma_k  n . (R_k+1 x R_k) / |R_k+1 x R_k|
+// R_k = v_k - x, gamma_k the angle between R_k and R_k+1. The vertices go
+// counter-clockwise seen from the polygon's front, which faces x, and lie on x's
+// side of its tangent plane (form_factor_point_to_polygon makes sure of both).
+double contour_integral(const vec3& x, const vec3& n, const vec3* vertices, int count);
+
+// The same for any polygon: zero when x sees its back, the part below x's tangent
+// plane clipped away.
+double form_factor_point_to_polygon(const vec3& x, const vec3& n, const Polygon& polygon);
+
+// Patch to patch: the point-to-polygon factor averaged over `from` with an
+// order x order Gauss-Legendre rule (order 1..16): F_ij = 1/A_i integral over A_i.
+double form_factor_analytic(const Polygon& from, const Polygon& to, int order);
+
+}  // namespace gi

@@ -1,0 +1,146 @@
+#include "gi/radiosity/item_buffer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "gi/core/onb.hpp"
+
+namespace gi {
+
+namespace {
+
+// A face seen as a camera: it looks along `forward`; screen coordinates are
+// (q.across, q.up) / q.forward, across in [-1, 1] and up in [-1, 1] (top) or [0, 1].
+struct FaceView {
+  int forward_axis;
+  double forward_sign;
+  int across_axis;
+  int up_axis;
+};
+constexpr FaceView views[hemicube_faces] = {
+    {2, 1, 0, 1},   // Top: looks along +z; columns x, rows y
+    {0, 1, 1, 2},   // PlusX: columns y, rows z
+    {0, -1, 1, 2},  // MinusX
+    {1, 1, 0, 2},   // PlusY: columns x, rows z
+    {1, -1, 0, 2},  // MinusY
+};
+
+constexpr int max_vertices = 8;
+struct ClippedPolygon {
+  std::array<vec3, max_vertices> v;
+  int n = 0;
+};
+
+// Sutherland-Hodgman against the plane q[axis] * sign >= near: keeps what lies in
+// front of the face, so that the division by the forward distance is safe.
+ClippedPolygon clip_near(const std::array<vec3, 4>& q, int axis, double sign, double near) {
+  ClippedPolygon out;
+  for (int i = 0; i < 4; ++i) {
+    const vec3& a = q[i];
+    const vec3& b = q[(i + 1) % 4];
+    const double da = sign * a[axis] - near, db = sign * b[axis] - near;
+    if (da >= 0) out.v[out.n++] = a;
+    if ((da >= 0) != (db >= 0)) out.v[out.n++] = a + (da / (da - db)) * (b - a);
+  }
+  return out;
+}
+
+void rasterise(const ClippedPolygon& p, const vec3& plane_normal, double plane_offset, int item, const FaceView& view,
+               int resolution, int rows, double row_origin, std::vector<int>& items, std::vector<double>& depths) {
+  // Project onto the face: screen position (s, t) = (across, up) / forward.
+  std::array<vec2, max_vertices> s;
+  double area2 = 0;
+  for (int k = 0; k < p.n; ++k) {
+    const double f = view.forward_sign * p.v[k][view.forward_axis];
+    s[k] = vec2(p.v[k][view.across_axis] / f, p.v[k][view.up_axis] / f);
+  }
+  for (int k = 0; k < p.n; ++k) area2 += s[k].x * s[(k + 1) % p.n].y - s[(k + 1) % p.n].x * s[k].y;
+  if (std::abs(area2) < 1e-300) return;
+  const double orientation = area2 > 0 ? 1.0 : -1.0;
+  // The cells whose centres may lie inside: the projected bounding box.
+  const double cell = 2.0 / resolution;
+  double lo_x = s[0].x, hi_x = s[0].x, lo_y = s[0].y, hi_y = s[0].y;
+  for (int k = 1; k < p.n; ++k) {
+    lo_x = std::min(lo_x, s[k].x), hi_x = std::max(hi_x, s[k].x);
+    lo_y = std::min(lo_y, s[k].y), hi_y = std::max(hi_y, s[k].y);
+  }
+  // Clamped before the conversion: a polygon reaching close to the face's plane
+  // projects to enormous coordinates that no int can hold.
+  const auto first = [&](double lo, double origin, int cells) {
+    return static_cast<int>(std::clamp(std::ceil((lo - origin) / cell - 0.5), 0.0, double(cells)));
+  };
+  const auto last = [&](double hi, double origin, int cells) {
+    return static_cast<int>(std::clamp(std::floor((hi - origin) / cell - 0.5), -1.0, double(cells - 1)));
+  };
+  const int c0 = first(lo_x, -1, resolution), c1 = last(hi_x, -1, resolution);
+  const int r0 = first(lo_y, row_origin, rows), r1 = last(hi_y, row_origin, rows);
+  for (int row = r0; row <= r1; ++row) {
+    const double y = row_origin + (row + 0.5) * cell;
+    for (int column = c0; column <= c1; ++column) {
+      const double x = -1 + (column + 0.5) * cell;
+      bool inside = true;
+      for (int k = 0; k < p.n && inside; ++k) {
+        const vec2& a = s[k];
+        const vec2& b = s[(k + 1) % p.n];
+        inside = orientation * ((b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x)) >= 0;
+      }
+      if (!inside) continue;
+      // Exact depth: where the cell's ray d = forward + x across + y up meets the
+      // polygon's plane n.q = offset, measured along the face's axis.
+      vec3 d;
+      d[view.forward_axis] = view.forward_sign;
+      d[view.across_axis] = x;
+      d[view.up_axis] = y;
+      const double depth = plane_offset / dot(plane_normal, d);
+      double& nearest = depths[row * resolution + column];
+      if (depth > 0 && depth < nearest) {
+        nearest = depth;
+        items[row * resolution + column] = item;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void render_item_buffer(const std::vector<Polygon>& polygons, const vec3& centre, const vec3& normal, int resolution,
+                        ItemBuffer& buffer) {
+  buffer.resolution = resolution;
+  for (int f = 0; f < hemicube_faces; ++f) {
+    const std::size_t cells = static_cast<std::size_t>(buffer.rows(HemicubeFace(f))) * resolution;
+    buffer.items[f].assign(cells, -1);
+    buffer.depths[f].assign(cells, std::numeric_limits<double>::infinity());
+  }
+  const Onb frame(normal);  // hemicube coordinates: x = frame.u, y = frame.v, z = normal
+  for (int i = 0; i < static_cast<int>(polygons.size()); ++i) {
+    const Polygon& polygon = polygons[i];
+    std::array<vec3, 4> q;
+    double highest = 0, size = 0;
+    for (int k = 0; k < 4; ++k) {
+      const vec3 r = polygon.corners[k] - centre;
+      q[k] = vec3(dot(r, frame.u), dot(r, frame.v), dot(r, normal));
+      highest = std::max(highest, q[k].z);
+      size = std::max(size, length(r));
+    }
+    const double near = 1e-9 * size;
+    if (highest <= near) continue;  // behind the base plane or in it
+    const vec3 n(dot(polygon.normal, frame.u), dot(polygon.normal, frame.v), dot(polygon.normal, normal));
+    const double offset = dot(n, q[0]);  // the plane n.q = offset; the centre q = 0 is in front if offset < 0
+    const int item = offset < 0 ? i : -1;
+    for (int f = 0; f < hemicube_faces; ++f) {
+      const FaceView& view = views[f];
+      // Quick reject: nothing of the polygon in front of this face.
+      bool any = false;
+      for (int k = 0; k < 4 && !any; ++k) any = view.forward_sign * q[k][view.forward_axis] > near;
+      if (!any) continue;
+      const ClippedPolygon clipped = clip_near(q, view.forward_axis, view.forward_sign, near);
+      if (clipped.n < 3) continue;
+      const int rows = buffer.rows(HemicubeFace(f));
+      rasterise(clipped, n, offset, item, view, resolution, rows, f == 0 ? -1.0 : 0.0, buffer.items[f],
+                buffer.depths[f]);
+    }
+  }
+}
+
+}  // namespace gi

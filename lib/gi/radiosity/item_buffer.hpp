@@ -1,0 +1,29 @@
+#pragma once
+#include <array>
+#include <vector>
+
+#include "gi/radiosity/hemicube.hpp"
+#include "gi/radiosity/polygon.hpp"
+
+namespace gi {
+
+// What a hemicube sees: for every cell of its five faces, the index of the nearest
+// polygon there, or -1 where it sees nothing or the back of a polygon (surfaces are
+// one-sided: a back face hides what is behind it but receives nothing). Rendered
+// like a frame of a z-buffer renderer, one per face: occlusion comes for free.
+struct ItemBuffer {
+  int resolution = 0;
+  std::array<std::vector<int>, hemicube_faces> items;      // top: res x res; sides: res/2 rows of res
+  std::array<std::vector<double>, hemicube_faces> depths;  // distance along the face's axis (scratch)
+
+  int rows(HemicubeFace face) const { return face == HemicubeFace::Top ? resolution : resolution / 2; }
+};
+
+// Renders `polygons` into the hemicube standing at `centre` with unit normal `normal`
+// (its x and y axes are any tangents; the delta form factors do not care). Polygons
+// behind the base plane, or in it (the patch itself and its coplanar neighbours),
+// are left out. Reuses `buffer`'s memory between calls.
+void render_item_buffer(const std::vector<Polygon>& polygons, const vec3& centre, const vec3& normal, int resolution,
+                        ItemBuffer& buffer);
+
+}  // namespace gi
