@@ -1,0 +1,61 @@
+// Graded tests of exercise 6.2: Lambert's contour integral. One point per test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gi/radiosity/configuration_factors.hpp"
+#include "gi/radiosity/form_factor_formulas.hpp"
+
+using gi::vec3;
+
+namespace {
+// Counter-clockwise seen from below (from the point at the origin): the rectangle
+// [x0, x1] x [y0, y1] at height c, facing down.
+std::array<vec3, 4> rectangle(double x0, double x1, double y0, double y1, double c) {
+  return {vec3(x0, y0, c), vec3(x0, y1, c), vec3(x1, y1, c), vec3(x1, y0, c)};
+}
+double contour(const vec3& n, const std::array<vec3, 4>& v) { return gi::contour_integral({0, 0, 0}, n, v.data(), 4); }
+}  // namespace
+
+TEST(Ex6_2_Contour, CornerRectangleMatchesHowell) {
+  const double exact = gi::ff_point_to_parallel_rectangle_corner(1.3, 0.6, 0.9);
+  EXPECT_NEAR(contour({0, 0, 1}, rectangle(0, 1.3, 0, 0.6, 0.9)), exact, 1e-12)
+      << "F = 1/(2 pi) sum gamma_k n . unit(R_k+1 x R_k); a negative value means the cross product is the "
+         "wrong way round, a value 2 pi too large a missing 1/(2 pi)";
+}
+
+TEST(Ex6_2_Contour, CentredSquareIsFourCorners) {
+  const double corner = gi::ff_point_to_parallel_rectangle_corner(1, 1, 2);
+  EXPECT_NEAR(contour({0, 0, 1}, rectangle(-1, 1, -1, 1, 2)), 4 * corner, 1e-12);
+}
+
+TEST(Ex6_2_Contour, GammaIsTheAngleBetweenTheVertexVectors) {
+  // A thin sliver far off-axis: wrong angles (e.g. not normalising before acos) show here.
+  const double a = gi::ff_point_to_parallel_rectangle_corner(3.0, 2.5, 1.0);
+  const double b = gi::ff_point_to_parallel_rectangle_corner(2.9, 2.5, 1.0);
+  EXPECT_NEAR(contour({0, 0, 1}, rectangle(2.9, 3.0, 0, 2.5, 1.0)), a - b, 1e-12);
+}
+
+TEST(Ex6_2_Contour, WorksForTriangles) {
+  // The square split along its diagonal: the two halves add up to the square.
+  const std::array<vec3, 4> q = rectangle(0, 1, 0, 1, 1);
+  const vec3 t1[3] = {q[0], q[1], q[2]}, t2[3] = {q[0], q[2], q[3]};
+  const double whole = gi::ff_point_to_parallel_rectangle_corner(1, 1, 1);
+  EXPECT_NEAR(gi::contour_integral({0, 0, 0}, {0, 0, 1}, t1, 3) + gi::contour_integral({0, 0, 0}, {0, 0, 1}, t2, 3),
+              whole, 1e-12)
+      << "use `count` vertices and wrap around from the last to the first";
+}
+
+TEST(Ex6_2_Contour, TheNormalOfTheReceivingPointCounts) {
+  // A huge polygon over the half x > 0 of the plane z = 1, seen from a point whose
+  // normal is +x: it fills half of the point's hemisphere, F -> 1/2.
+  const double L = 1e5;
+  EXPECT_NEAR(contour({1, 0, 0}, rectangle(0, L, -L, L, 1)), 0.5, 1e-4)
+      << "project each edge's term on the point's normal n, not on the z axis";
+}
+
+TEST(Ex6_2_Contour, CoversTheWholeHemisphere) {
+  const double L = 1e5;
+  EXPECT_NEAR(contour({0, 0, 1}, rectangle(-L, L, -L, L, 1)), 1.0, 1e-4)
+      << "an infinite plane above the point fills its view: F = 1";
+}

@@ -1,0 +1,61 @@
+// Graded tests of exercise 6.1: the differential form factor with visibility. One
+// point per test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gi/radiosity/configuration_factors.hpp"
+#include "gi/radiosity/form_factor_formulas.hpp"
+
+using gi::vec3;
+
+namespace {
+const double pi = 3.14159265358979323846;
+}
+
+TEST(Ex6_1_Differential, FacingPointsStraightOn) {
+  // Both cosines 1, r = 2, A_j = 0.5: F = 1 * 1 / (pi * 4) * 0.5.
+  EXPECT_NEAR(gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, -1}, 0.5, 1.0), 0.5 / (4 * pi),
+              1e-15)
+      << "F = cos_i cos_j / (pi r^2) A_j: check the 1/pi and that r is squared";
+}
+
+TEST(Ex6_1_Differential, ObliqueUsesBothCosines) {
+  // x_j = (1, 0, 1): r^2 = 2; cos_i = cos_j = 1/sqrt(2).
+  EXPECT_NEAR(gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {-1, 0, 0}, 1.0, 1.0), 0.5 / (2 * pi),
+              1e-15)
+      << "both cosines count, each with the unit vector between the points";
+}
+
+TEST(Ex6_1_Differential, UnitVectorNotTheRawDifference) {
+  // r = 3 along z: cos = 1, not 3.
+  EXPECT_NEAR(gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {0, 0, 3}, {0, 0, -1}, 1.0, 1.0), 1 / (9 * pi),
+              1e-15)
+      << "normalise the direction before taking the cosines";
+}
+
+TEST(Ex6_1_Differential, ReceiverFacingAwayGetsNothing) {
+  EXPECT_EQ(gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}, 1.0, 1.0), 0.0)
+      << "the receiver's back faces the sender (cos_j < 0): no energy arrives. Do not take |cos|";
+}
+
+TEST(Ex6_1_Differential, ReceiverBehindTheSenderGetsNothing) {
+  EXPECT_EQ(gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {0, 0, -2}, {0, 0, 1}, 1.0, 1.0), 0.0)
+      << "the receiver is behind the sender's surface (cos_i < 0)";
+}
+
+TEST(Ex6_1_Differential, VisibilityScales) {
+  const double open = gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, -1}, 1.0, 1.0);
+  EXPECT_EQ(gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, -1}, 1.0, 0.0), 0.0)
+      << "H_ij = 0: a blocked pair exchanges nothing";
+  EXPECT_NEAR(gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, -1}, 1.0, 0.25), 0.25 * open,
+              1e-15)
+      << "multiply by the visibility H_ij";
+}
+
+TEST(Ex6_1_Differential, GoodFarAwayForPatches) {
+  // Unit squares 10 apart: centre to centre is within 1% of the exact patch factor.
+  const double exact = gi::ff_parallel_rectangles(1, 1, 10);
+  EXPECT_NEAR(gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {0, 0, 10}, {0, 0, -1}, 1.0, 1.0), exact,
+              0.01 * exact);
+}

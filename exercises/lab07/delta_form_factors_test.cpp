@@ -1,0 +1,60 @@
+// Graded tests of exercises 7.1 and 7.2: the delta form factors of hemicube cells.
+// One point per test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+#include "gi/radiosity/hemicube.hpp"
+
+namespace {
+const double pi = 3.14159265358979323846;
+const double dA = 0.0004;  // a 0.02 x 0.02 cell
+// Form factor from a point to the whole top face, [-1, 1]^2 at height 1: four corner
+// rectangles of Howell's case, 4 * (1 / 2pi) * 2 * atan(1 / sqrt 2) / sqrt 2.
+const double top_share = 4.0 / pi * std::atan(1 / std::sqrt(2.0)) / std::sqrt(2.0);
+}  // namespace
+
+TEST(Ex7_1_DeltaTop, CentreCellIsAreaOverPi) {
+  EXPECT_NEAR(gi::delta_form_factor_top(0, 0, dA), dA / pi, 1e-15)
+      << "straight up both cosines are 1 and r = 1: dF = dA / pi (did you forget the 1/pi?)";
+}
+
+TEST(Ex7_1_DeltaTop, DenominatorIsSquared) {
+  EXPECT_NEAR(gi::delta_form_factor_top(0.5, 0, dA), dA / (pi * 1.25 * 1.25), 1e-15)
+      << "dF = dA / (pi (x^2 + y^2 + 1)^2): cos(theta_i) cos(theta_cell) / r^2 gives the power 2";
+}
+
+TEST(Ex7_1_DeltaTop, CornerCell) {
+  EXPECT_NEAR(gi::delta_form_factor_top(1, -1, dA), dA / (9 * pi), 1e-15) << "at (1, -1): (1 + 1 + 1)^2 = 9";
+}
+
+TEST(Ex7_1_DeltaTop, TopFaceSumsToItsShareOfTheHemisphere) {
+  const gi::HemicubeWeights w = gi::hemicube_weights(200);
+  const double sum = std::accumulate(w.top.begin(), w.top.end(), 0.0);
+  EXPECT_NEAR(sum, top_share, 1e-4) << "the top face sees " << top_share << " of the hemisphere (projected)";
+}
+
+TEST(Ex7_2_DeltaSide, NothingAtTheHorizon) {
+  EXPECT_NEAR(gi::delta_form_factor_side(0.3, 0.0, dA), 0.0, 1e-18)
+      << "at z = 0 the cell is in the patch's plane: cos(theta_i) = 0. Keep the factor z";
+}
+
+TEST(Ex7_2_DeltaSide, HalfwayUp) {
+  EXPECT_NEAR(gi::delta_form_factor_side(0, 0.5, dA), 0.5 * dA / (pi * 1.25 * 1.25), 1e-15)
+      << "dF = z dA / (pi (u^2 + z^2 + 1)^2)";
+}
+
+TEST(Ex7_2_DeltaSide, OffCentre) {
+  const double u = 0.6, z = 0.4;
+  const double d = u * u + z * z + 1;
+  EXPECT_NEAR(gi::delta_form_factor_side(u, z, dA), z * dA / (pi * d * d), 1e-15)
+      << "u runs across the face, z up it; both enter the distance";
+}
+
+TEST(Ex7_2_DeltaSide, TheWholeHemicubeSumsToOne) {
+  const gi::HemicubeWeights w = gi::hemicube_weights(100);
+  const double sides = 4 * std::accumulate(w.side.begin(), w.side.end(), 0.0);
+  EXPECT_NEAR(sides, 1 - top_share, 1e-3) << "the four half-faces see the rest of the hemisphere";
+  EXPECT_NEAR(w.sum(), 1.0, 1e-3) << "all delta form factors together: the whole hemisphere, 1";
+}

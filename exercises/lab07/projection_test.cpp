@@ -1,0 +1,66 @@
+// Graded tests of exercise 7.3: projecting a direction onto the hemicube. One point
+// per test.
+#include <gtest/gtest.h>
+
+#include "gi/radiosity/hemicube.hpp"
+
+using gi::HemicubeFace;
+using gi::vec3;
+
+namespace {
+void expect_cell(const vec3& d, int res, HemicubeFace face, int column, int row, const char* why) {
+  const auto cell = gi::project_to_hemicube(d, res);
+  ASSERT_TRUE(cell.has_value()) << why;
+  EXPECT_EQ(cell->face, face) << why;
+  EXPECT_EQ(cell->column, column) << why;
+  EXPECT_EQ(cell->row, row) << why;
+}
+}  // namespace
+
+TEST(Ex7_3_Projection, StraightUpIsTheTopCentre) {
+  expect_cell({0, 0, 1}, 100, HemicubeFace::Top, 50, 50, "(0, 0, 1) meets the top face at its centre");
+}
+
+TEST(Ex7_3_Projection, BelowTheHorizonIsNothing) {
+  EXPECT_FALSE(gi::project_to_hemicube({0.3, 0.2, -0.5}, 100)) << "z < 0 is behind the patch";
+  EXPECT_FALSE(gi::project_to_hemicube({1, 0, 0}, 100)) << "z = 0 lies in the patch's plane: no cell";
+}
+
+TEST(Ex7_3_Projection, EachSideFace) {
+  EXPECT_EQ(gi::project_to_hemicube({1, 0.2, 0.5}, 10)->face, HemicubeFace::PlusX);
+  EXPECT_EQ(gi::project_to_hemicube({-1, 0.2, 0.5}, 10)->face, HemicubeFace::MinusX);
+  EXPECT_EQ(gi::project_to_hemicube({0.1, 1, 0.3}, 10)->face, HemicubeFace::PlusY);
+  EXPECT_EQ(gi::project_to_hemicube({0.1, -1, 0.3}, 10)->face, HemicubeFace::MinusY)
+      << "the face is the axis with the largest component, with its sign";
+}
+
+TEST(Ex7_3_Projection, TopCellIndices) {
+  // (x, y) / z = (0.5, -0.25): column (0.5 + 1) / 2 * 8 = 6, row (-0.25 + 1) / 2 * 8 = 3.
+  expect_cell({1, -0.5, 2}, 8, HemicubeFace::Top, 6, 3, "divide by z to reach the plane z = 1, then map [-1, 1] to cells");
+}
+
+TEST(Ex7_3_Projection, SideCellIndices) {
+  // On the face x = 1: (y, z) / x = (-0.5, 0.5): column 25 of 100, row 25 of 50.
+  expect_cell({2, -1, 1}, 100, HemicubeFace::PlusX, 25, 25,
+              "divide by |x| to reach the face x = 1; rows count up from the horizon z = 0 over [0, 1]");
+}
+
+TEST(Ex7_3_Projection, LengthDoesNotMatter) {
+  const auto a = gi::project_to_hemicube({0.3, 0.1, 0.2}, 50), b = gi::project_to_hemicube({3, 1, 2}, 50);
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(a->face, b->face);
+  EXPECT_EQ(a->column, b->column);
+  EXPECT_EQ(a->row, b->row) << "a direction need not be unit length: only ratios matter";
+}
+
+TEST(Ex7_3_Projection, EdgesStayInsideTheGrid) {
+  for (const vec3& d : {vec3(1, 1, 1), vec3(-1, -1, 1), vec3(1, -1, 1e-9), vec3(-1, 1, 1)}) {
+    const auto cell = gi::project_to_hemicube(d, 10);
+    ASSERT_TRUE(cell.has_value());
+    const int rows = cell->face == HemicubeFace::Top ? 10 : 5;
+    EXPECT_GE(cell->column, 0);
+    EXPECT_LT(cell->column, 10) << "a direction through a cube edge must land in a valid cell: clamp";
+    EXPECT_GE(cell->row, 0);
+    EXPECT_LT(cell->row, rows) << "side faces have res/2 rows";
+  }
+}
