@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -39,7 +40,14 @@ std::string bytes(const fs::path& file) {
   return s.str();
 }
 
-const char* const lessons[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows"};
+// Every lesson, and the ones that render an image of a scene (which take --width,
+// --height and, but for 04, --scene).
+const char* const lessons[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows", "07_hemicube"};
+const char* const rendering[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows"};
+
+bool renders(const std::string& lesson) {
+  return std::find(std::begin(rendering), std::end(rendering), lesson) != std::end(rendering);
+}
 
 }  // namespace
 
@@ -47,7 +55,10 @@ TEST(Lessons, HelpExitsZeroAndListsTheCommonOptions) {
   for (const char* lesson : lessons) {
     const LessonRun r = run(lesson, "--help");
     EXPECT_EQ(r.status, 0) << lesson;
-    for (const char* option : {"--out", "--threads", "--seed", "--width", "--height"})
+    for (const char* option : {"--out", "--threads", "--seed"})
+      EXPECT_NE(r.output.find(option), std::string::npos) << lesson << " --help does not mention " << option;
+    if (!renders(lesson)) continue;
+    for (const char* option : {"--width", "--height"})
       EXPECT_NE(r.output.find(option), std::string::npos) << lesson << " --help does not mention " << option;
     if (std::string(lesson) != "04_soft_shadows") {  // its scene is made for its measurement
       EXPECT_NE(r.output.find("whitted"), std::string::npos) << lesson << " --help does not list the scenes";
@@ -57,7 +68,9 @@ TEST(Lessons, HelpExitsZeroAndListsTheCommonOptions) {
 
 TEST(Lessons, BadOptionsGiveOneLineAndStatusTwo) {
   for (const char* lesson : lessons) {
-    for (const char* args : {"--width -3", "--bogus", "--width", "--scene nowhere", "--threads x", "--height nan"}) {
+    std::vector<std::string> bad = {"--bogus", "--threads x", "--threads -2", "--out", "--seed 1.5"};
+    if (renders(lesson)) bad.insert(bad.end(), {"--width -3", "--width", "--scene nowhere", "--height nan"});
+    for (const std::string& args : bad) {
       const LessonRun r = run(lesson, args);
       EXPECT_EQ(r.status, 2) << lesson << " " << args;
       EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << lesson << " " << args << ":\n" << r.output;
@@ -102,6 +115,17 @@ TEST(Lessons, SoftShadowsMeasuresThePenumbraAndWritesImages) {
   for (const char* file : {"penumbra_by_light_size.png", "hard.png", "jittered_16.png", "shadow_crops.png",
                            "reference.png", "penumbra.csv", "shadow_rays.csv", "error_vs_time.svg"})
     EXPECT_TRUE(fs::exists(out_dir("04") + "/" + file)) << file;
+}
+
+TEST(Lessons, HemicubeWritesItsPicturesAndTables) {
+  const LessonRun r = run("07_hemicube", "--elements 60 --resolution 20 --max-resolution 50 --speed-elements 200 --out " +
+                                             out_dir("07"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("reciprocity"), std::string::npos);
+  for (const char* file : {"item_buffer.png", "delta_form_factors.png", "form_factor_matrix.png", "resolution.csv",
+                           "speed.csv"})
+    EXPECT_TRUE(fs::exists(out_dir("07") + "/" + file)) << file;
+  EXPECT_EQ(run("07_hemicube", "--resolution 21").status, 2) << "odd resolutions are refused";
 }
 
 TEST(Lessons, SameBytesForAnyThreadCount) {

@@ -2,7 +2,7 @@
 
 namespace gi {
 
-RadiosityScene cornell_box() {
+RadiosityScene cornell_box(bool closed) {
   const Color white(0.725, 0.71, 0.68), red(0.63, 0.065, 0.05), green(0.14, 0.45, 0.091);
   const Color light_exitance = pi * Color(17, 12, 4);
   RadiosityScene s;
@@ -31,6 +31,7 @@ RadiosityScene cornell_box() {
   add("tall block 2", {{{472, 0, 406}, {472, 330, 406}, {314, 330, 456}, {314, 0, 456}}}, white);
   add("tall block 3", {{{314, 0, 456}, {314, 330, 456}, {265, 330, 296}, {265, 0, 296}}}, white);
   add("tall block 4", {{{265, 0, 296}, {265, 330, 296}, {423, 330, 247}, {423, 0, 247}}}, white);
+  if (closed) add("front (black)", {{{552.8, 0, 0}, {556, 548.8, 0}, {0, 548.8, 0}, {0, 0, 0}}}, Color(0.0));
   // Focal length 35 mm, film 25 mm: vertical field of view 2 atan(12.5 / 35).
   s.camera = Camera{{278, 273, -800}, {278, 273, 0}, {0, 1, 0}, 2 * std::atan(12.5 / 35) * 180 / pi};
   return s;

@@ -1,5 +1,9 @@
 #include "gi/radiosity/form_factor_hemicube.hpp"
 
+#include <algorithm>
+
+#include "gi/core/parallel.hpp"
+
 namespace gi {
 
 std::vector<double> form_factor_row_hemicube(const std::vector<Polygon>& polygons, const Polygon& from,
@@ -13,6 +17,22 @@ std::vector<double> form_factor_row_hemicube(const std::vector<Polygon>& polygon
       if (items[cell] >= 0) row[items[cell]] += delta[cell];
   }
   return row;
+}
+
+FormFactorMatrix form_factor_matrix_hemicube(const std::vector<Polygon>& polygons, int resolution, int threads) {
+  const HemicubeWeights weights = hemicube_weights(resolution);
+  const int n = static_cast<int>(polygons.size());
+  FormFactorMatrix F{n, std::vector<double>(static_cast<std::size_t>(n) * n)};
+  // Rows in blocks, so that each task reuses one item buffer's memory.
+  const int block = 16, blocks = (n + block - 1) / block;
+  parallel_for(blocks, threads, [&](int b) {
+    ItemBuffer buffer;
+    for (int i = b * block; i < std::min(n, (b + 1) * block); ++i) {
+      const std::vector<double> row = form_factor_row_hemicube(polygons, polygons[i], weights, buffer);
+      std::copy(row.begin(), row.end(), F.values.begin() + static_cast<std::ptrdiff_t>(i) * n);
+    }
+  });
+  return F;
 }
 
 }  // namespace gi

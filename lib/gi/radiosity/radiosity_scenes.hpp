@@ -18,8 +18,12 @@ namespace gi {
 //  - reflectances are spectra in the data; we use the RGB set of Morgan McGuire's
 //    Computer Graphics Archive version (white 0.725 0.71 0.68, red 0.63 0.065 0.05,
 //    green 0.14 0.45 0.091; light radiance 17 12 4, so exitance E = pi L), which many
-//    renderers share; the light's own reflectance is 0.78.
-RadiosityScene cornell_box();
+//    renderers share; the light's own reflectance is 0.78;
+//  - the box is open at the front (z = 0), where the camera looks in: light leaves
+//    there, so rows of F sum below 1. `closed` adds a black front wall (rho = 0),
+//    which absorbs exactly what the opening lets out but makes every row sum to 1:
+//    the form of the box to test conservation on.
+RadiosityScene cornell_box(bool closed = false);
 
 // The smallest scenes that show one effect each; sizes in metres.
 RadiosityScene parallel_squares(double side = 1.0, double distance = 1.0);    // two opposed squares

@@ -1,0 +1,165 @@
+// Lesson 07 -- the hemicube. What a hemicube on a Cornell-box floor element sees (its
+// item buffer, unfolded), the delta form factors of its cells, the whole form-factor
+// matrix as a heat map, and how row sums and reciprocity improve with resolution.
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "gi/core/timer.hpp"
+#include "gi/image/diff.hpp"
+#include "gi/image/image_io.hpp"
+#include "gi/radiosity/form_factor_hemicube.hpp"
+#include "gi/radiosity/hemicube_image.hpp"
+#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/report/lesson.hpp"
+#include "gi/report/options.hpp"
+#include "gi/report/progress.hpp"
+#include "gi/report/table.hpp"
+
+namespace {
+
+std::vector<gi::Polygon> element_shapes(const gi::Mesh& mesh) {
+  std::vector<gi::Polygon> shapes;
+  for (const gi::Element& e : mesh.elements) shapes.push_back(e.shape);
+  return shapes;
+}
+
+// The floor element nearest (180, 0, 420): behind the short block, beside the tall one.
+int floor_element(const gi::Mesh& mesh) {
+  const gi::vec3 spot(180, 0, 420);
+  int best = 0;
+  for (int i = 0; i < static_cast<int>(mesh.elements.size()); ++i)
+    if (mesh.elements[i].surface == 0 &&
+        gi::length(mesh.elements[i].shape.centre - spot) < gi::length(mesh.elements[best].shape.centre - spot))
+      best = i;
+  return best;
+}
+
+// Each element in its surface's colour, brightness varied per element so that
+// neighbours differ; the light white.
+gi::Pixel element_colour(const gi::Mesh& mesh, int element) {
+  if (element < 0) return gi::Pixel(0);
+  const gi::Element& e = mesh.elements[element];
+  if (gi::max_component(mesh.emission(e)) > 0) return gi::Pixel(1.0f, 0.85f, 0.2f);
+  const unsigned hash = static_cast<unsigned>(element) * 2654435761u;
+  const double shade = 0.25 + 0.5 * ((hash >> 16) & 255) / 255.0;
+  const gi::Color rho = mesh.reflectance(e);
+  return gi::Pixel(gi::max_component(rho) > 0 ? shade * rho / gi::max_component(rho) : gi::Color(0.15 * shade));
+}
+
+// 1. What one hemicube sees, and the weights of its cells.
+void hemicube_pictures(const gi::Mesh& mesh, int resolution, const std::string& out) {
+  const std::vector<gi::Polygon> shapes = element_shapes(mesh);
+  const int from = floor_element(mesh);
+  gi::ItemBuffer buffer;
+  gi::render_item_buffer(shapes, shapes[from].centre, shapes[from].normal, resolution, buffer);
+  const auto cell = [&](int column, int row) { return static_cast<std::size_t>(row) * resolution + column; };
+  const gi::Image items = gi::unfold_hemicube(resolution, [&](gi::HemicubeFace face, int column, int row) {
+    return element_colour(mesh, buffer.items[int(face)][cell(column, row)]);
+  });
+  gi::write_png(gi::enlarge(items, std::max(1, 300 / resolution)), out + "/item_buffer.png");
+  const gi::HemicubeWeights w = gi::hemicube_weights(resolution);
+  const double top = w.top[cell(resolution / 2, resolution / 2)];
+  const gi::Image weights = gi::unfold_hemicube(resolution, [&](gi::HemicubeFace face, int column, int row) {
+    const double dF = face == gi::HemicubeFace::Top ? w.top[cell(column, row)] : w.side[cell(column, row)];
+    return gi::false_colour({dF}, 1, 1, 0, top).pixels[0];
+  });
+  gi::write_png(gi::enlarge(weights, std::max(1, 300 / resolution)), out + "/delta_form_factors.png");
+}
+
+// Reciprocity over the whole matrix: sum |A_i F_ij - A_j F_ji| / sum A_i F_ij. The
+// worst single pair (gi::reciprocity_error) is ruled by pairs one centre sees and the
+// other does not -- point sampling's error, not the rasteriser's.
+double total_reciprocity_error(const gi::FormFactorMatrix& F, const std::vector<double>& areas) {
+  double difference = 0, total = 0;
+  for (int i = 0; i < F.n; ++i)
+    for (int j = 0; j < F.n; ++j) {
+      difference += std::abs(areas[i] * F(i, j) - areas[j] * F(j, i));
+      total += areas[i] * F(i, j);
+    }
+  return difference / total;
+}
+
+// 2. The matrix as a heat map of log10 F_ij.
+void matrix_picture(const gi::FormFactorMatrix& F, const std::string& out) {
+  std::vector<double> logs(F.values.size());
+  for (std::size_t k = 0; k < logs.size(); ++k) logs[k] = F.values[k] > 0 ? std::log10(F.values[k]) : -8;
+  gi::write_png(gi::false_colour(logs, F.n, F.n, -6, -1), out + "/form_factor_matrix.png");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return gi::run_lesson("07_hemicube", [&] {
+    gi::CommonOptions common;
+    int elements = 600, resolution = 100, max_resolution = 400, speed_elements = 10000;
+    gi::Options options("07_hemicube", "The hemicube: item buffer, delta form factors, the form-factor matrix, and "
+                                       "row sums and reciprocity against resolution (Cornell box).");
+    gi::add_common_options(options, common, "07_hemicube");
+    options.add("--elements", elements, "about how many elements to mesh the Cornell box into", 20, 5000)
+        .add("--resolution", resolution, "hemicube resolution for the pictures (even)", 10, 1000)
+        .add("--max-resolution", max_resolution, "largest resolution in the table", 10, 1000)
+        .add("--speed-elements", speed_elements, "elements for the one-row timing", 100, 100000);
+    if (!options.parse(argc, argv)) return 0;
+    if (resolution % 2 || max_resolution % 2) throw gi::OptionError("hemicube resolutions must be even");
+    const std::string& out = common.out;
+    const gi::RadiosityScene scene = gi::cornell_box(true);  // closed: rows must sum to 1
+    const gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, elements, 1), 1});
+    const std::vector<gi::Polygon> shapes = element_shapes(mesh);
+    std::vector<double> areas;
+    for (const gi::Polygon& p : shapes) areas.push_back(p.area);
+
+    hemicube_pictures(mesh, resolution, out);
+
+    gi::Table table("Hemicube resolution against row sums (1 in a closed room) and reciprocity, closed Cornell box, " +
+                        std::to_string(shapes.size()) + " elements",
+                    {{"resolution"}, {"cells"}, {"matrix ms", 0}, {"buried"}, {"min row sum", 4}, {"max row sum", 4},
+                     {"mean |1 - sum|", 2, gi::Format::Scientific}, {"reciprocity", 2, gi::Format::Scientific}});
+    std::vector<int> resolutions;
+    for (int r : {10, 20, 50, 100, 200, 400})
+      if (r <= max_resolution) resolutions.push_back(r);
+    gi::Progress progress("hemicubes", static_cast<long long>(resolutions.size()));
+    for (int r : resolutions) {
+      const gi::Timer timer;
+      const gi::FormFactorMatrix F = gi::form_factor_matrix_hemicube(shapes, r, common.threads);
+      const double ms = timer.milliseconds();
+      progress.advance();
+      // Floor elements whose centre lies under a block see only the block's inside
+      // (back faces): their rows are 0. The statistics leave them out.
+      std::vector<double> sums;
+      for (double s : gi::row_sums(F))
+        if (s > 0.5) sums.push_back(s);
+      double deviation = 0;
+      for (double s : sums) deviation += std::abs(1 - s) / sums.size();
+      table.add_row({r, 3 * r * r, ms, static_cast<long long>(F.n - sums.size()),
+                     *std::min_element(sums.begin(), sums.end()), *std::max_element(sums.begin(), sums.end()),
+                     deviation, total_reciprocity_error(F, areas)});
+      if (r == resolution) matrix_picture(F, out);
+    }
+    progress.finish();
+    table.print();
+    table.write_csv(out + "/resolution.csv");
+
+    // 3. The speed figure: one row against a finely meshed box, one thread.
+    const gi::Mesh fine = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, speed_elements, 1), 1});
+    const std::vector<gi::Polygon> fine_shapes = element_shapes(fine);
+    const gi::HemicubeWeights weights = gi::hemicube_weights(100);
+    gi::ItemBuffer buffer;
+    std::vector<double> times;
+    for (int i = 0; i < static_cast<int>(fine_shapes.size()); i += static_cast<int>(fine_shapes.size()) / 25) {
+      const gi::Timer timer;
+      (void)gi::form_factor_row_hemicube(fine_shapes, fine_shapes[i], weights, buffer);
+      times.push_back(timer.milliseconds());
+    }
+    gi::Table speed("One hemicube row, resolution 100, one thread (median of " + std::to_string(times.size()) + " rows)",
+                    {{"elements"}, {"ms per row", 2}, {"rows per second", 0}});
+    speed.add_row({static_cast<long long>(fine_shapes.size()), gi::median(times), 1e3 / gi::median(times)});
+    std::cout << '\n';
+    speed.print();
+    speed.write_csv(out + "/speed.csv");
+    std::cout << "\nimages: " << out << "/ (item_buffer.png, delta_form_factors.png, form_factor_matrix.png)\n";
+    return 0;
+  });
+}
