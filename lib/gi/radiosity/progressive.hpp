@@ -1,0 +1,46 @@
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "gi/radiosity/mesh.hpp"
+#include "gi/radiosity/solver.hpp"
+
+namespace gi {
+
+// Progressive refinement (Cohen, Chen, Wallace and Greenberg 1988): instead of every
+// element gathering, the patch with the most unshot power shoots it to every
+// element. Only that patch's row of form factors is needed, computed when it shoots
+// (a hemicube), so no n x n matrix is stored, and after every shot the current B is
+// a picture worth showing.
+//
+// Shooting from patch p, with unshot radiosity dB_p: element j receives
+//   dB_j = rho_j dB_p F_pj A_p / A_j       (F_jp = F_pj A_p / A_j by reciprocity)
+// which adds to its radiosity B_j and to its own unshot dB_j; then dB_p = 0.
+
+// The form factors from patch p to every element, computed when p shoots.
+using ShooterRow = std::function<std::vector<double>(int patch)>;
+
+// One shot: the patch (area `area_p`, unshot radiosity `unshot_p`) sends to every
+// element j. Adds to B and to the elements' unshot radiosity; the caller clears the
+// shooter's own elements' unshot (done in solve_progressive, before the shot).
+void shoot(const Color& unshot_p, double area_p, const std::vector<double>& F_p, const std::vector<double>& area,
+           const std::vector<Color>& rho, std::vector<Color>& B, std::vector<Color>& unshot);
+
+// The ambient term, for display only: the light not yet shot, spread evenly and
+// reflected again and again,
+//   ambient = R_total * sum_i dB_i A_i / sum_i A_i,   R_total = 1 / (1 - rho_avg),
+// with rho_avg the area-weighted mean reflectance (per channel). Shown as B_i +
+// rho_i * ambient, it gives early pictures the right overall brightness.
+Color ambient_term(const std::vector<double>& area, const std::vector<Color>& rho, const std::vector<Color>& unshot);
+
+// B_i + rho_i * ambient for every element.
+std::vector<Color> with_ambient(const std::vector<double>& area, const std::vector<Color>& rho,
+                                const std::vector<Color>& B, const std::vector<Color>& unshot);
+
+// Shoots from the mesh's patches (each the group of its elements; unshot radiosity
+// is kept per element and a patch's is their area-weighted mean) until the unshot
+// energy falls below options.tolerance or max_steps shots. system.F is not used.
+SolverResult solve_progressive(const RadiositySystem& system, const Mesh& mesh, const ShooterRow& row,
+                               const SolverOptions& options = {});
+
+}  // namespace gi

@@ -1,0 +1,199 @@
+#include "gi/radiosity/solvers.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gi/radiosity/form_factor_hemicube.hpp"
+#include "gi/radiosity/progressive.hpp"
+#include "gi/radiosity/radiosity_scenes.hpp"
+
+using gi::Color;
+
+namespace {
+
+// A "furnace": n elements of equal area, each seeing every other equally, F_ij =
+// 1/(n-1): a closed room. With uniform rho and E the answer is B = E / (1 - rho).
+gi::RadiositySystem furnace(int n, double rho, double e) {
+  gi::RadiositySystem s;
+  s.area.assign(n, 1.0);
+  s.rho.assign(n, Color(rho));
+  s.emission.assign(n, Color(e));
+  s.F = {n, std::vector<double>(static_cast<std::size_t>(n) * n, 1.0 / (n - 1))};
+  for (int i = 0; i < n; ++i) s.F(i, i) = 0;
+  return s;
+}
+
+std::vector<gi::Polygon> shapes(const gi::Mesh& mesh) {
+  std::vector<gi::Polygon> out;
+  for (const gi::Element& e : mesh.elements) out.push_back(e.shape);
+  return out;
+}
+
+// The Cornell box at ~150 elements with hemicube form factors.
+struct Cornell {
+  gi::Mesh mesh;
+  gi::RadiositySystem system;
+};
+const Cornell& cornell() {
+  static const Cornell c = [] {
+    const gi::RadiosityScene scene = gi::cornell_box();
+    gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, 150, 1), 1});
+    gi::FormFactorMatrix F = gi::form_factor_matrix_hemicube(shapes(mesh), 50, 2);
+    gi::RadiositySystem system = gi::make_system(mesh, std::move(F));
+    return Cornell{std::move(mesh), std::move(system)};
+  }();
+  return c;
+}
+
+double max_difference(const std::vector<Color>& a, const std::vector<Color>& b) {
+  double d = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, gi::max_component(glm::abs(a[i] - b[i])));
+  return d;
+}
+
+}  // namespace
+
+TEST(Solvers, FurnaceHasTheClosedFormAnswer) {
+  const gi::RadiositySystem s = furnace(12, 0.7, 2.0);
+  gi::SolverOptions options;
+  options.tolerance = 1e-12;
+  for (const gi::SolverResult& r : {gi::solve_direct(s, options), gi::solve_jacobi(s, options),
+                                    gi::solve_gauss_seidel(s, options), gi::solve_gauss_seidel(s, options, 1.3),
+                                    gi::solve_southwell(s, options)}) {
+    EXPECT_EQ(r.status, gi::SolveStatus::Converged) << r.method;
+    for (const Color& b : r.B) EXPECT_NEAR(b.y, 2.0 / 0.3, 1e-9) << r.method;
+  }
+}
+
+TEST(Solvers, TwoPatchesSolvedByHand) {
+  // B1 = E1 + rho1 F12 B2, B2 = rho2 F21 B1 with E2 = 0.
+  gi::RadiositySystem s;
+  s.area = {1, 2};
+  s.rho = {Color(0.5), Color(0.8)};
+  s.emission = {Color(1), Color(0)};
+  s.F = {2, {0, 0.4, 0.2, 0}};
+  const double b1 = 1 / (1 - 0.5 * 0.4 * 0.8 * 0.2), b2 = 0.8 * 0.2 * b1;
+  const gi::SolverResult r = gi::solve_direct(s);
+  EXPECT_NEAR(r.B[0].x, b1, 1e-14);
+  EXPECT_NEAR(r.B[1].x, b2, 1e-14);
+}
+
+TEST(Solvers, AllAgreeOnTheCornellBox) {
+  const gi::RadiositySystem& s = cornell().system;
+  const gi::SolverResult direct = gi::solve_direct(s);
+  gi::SolverOptions options;
+  options.tolerance = 1e-10;
+  options.max_steps = 200000;
+  options.reference = &direct.B;
+  double scale = 0;
+  for (const Color& b : direct.B) scale = std::max(scale, gi::max_component(b));
+  for (const gi::SolverResult& r : {gi::solve_jacobi(s, options), gi::solve_gauss_seidel(s, options),
+                                    gi::solve_gauss_seidel(s, options, 1.2), gi::solve_southwell(s, options)}) {
+    EXPECT_EQ(r.status, gi::SolveStatus::Converged) << r.method;
+    EXPECT_LT(max_difference(r.B, direct.B), 1e-8 * scale) << r.method;
+    EXPECT_LT(r.history.back().error, 1e-8) << r.method;
+  }
+}
+
+TEST(Solvers, JacobiSumsTheNeumannSeries) {
+  const gi::RadiositySystem& s = cornell().system;
+  // E + RFE + (RF)^2 E, term by term.
+  std::vector<Color> term = s.emission, sum = s.emission;
+  for (int k = 1; k <= 2; ++k) {
+    std::vector<Color> next(s.size(), Color(0.0));
+    for (int i = 0; i < s.size(); ++i)
+      for (int j = 0; j < s.size(); ++j) next[i] += s.rho[i] * s.F(i, j) * term[j];
+    term = next;
+    for (int i = 0; i < s.size(); ++i) sum[i] += term[i];
+  }
+  gi::SolverOptions options;
+  options.max_steps = 2;
+  options.tolerance = 0;
+  EXPECT_LT(max_difference(gi::solve_jacobi(s, options).B, sum), 1e-9);
+}
+
+TEST(Solvers, GaussSeidelNeedsFewerSweepsThanJacobi) {
+  const gi::RadiositySystem& s = cornell().system;
+  gi::SolverOptions options;
+  options.tolerance = 1e-8;
+  const auto jacobi = gi::solve_jacobi(s, options), gauss_seidel = gi::solve_gauss_seidel(s, options);
+  EXPECT_LT(gauss_seidel.history.size() * 3, jacobi.history.size() * 2);
+}
+
+TEST(Solvers, SouthwellKeepsItsResidualUpToDate) {
+  const gi::RadiositySystem& s = cornell().system;
+  std::vector<Color> B(s.size(), Color(0.0)), r = s.emission;
+  for (int step = 0; step < 300; ++step) gi::southwell_step(s, B, r);
+  EXPECT_LT(max_difference(r, gi::residual(s, B)), 1e-9);
+}
+
+TEST(Solvers, DivergenceIsReportedNotHidden) {
+  const gi::RadiositySystem s = furnace(8, 1.3, 1.0);  // reflects more than it receives
+  gi::SolverOptions options;
+  options.max_steps = 100000;
+  for (const gi::SolverResult& r : {gi::solve_jacobi(s, options), gi::solve_gauss_seidel(s, options),
+                                    gi::solve_southwell(s, options)}) {
+    EXPECT_EQ(r.status, gi::SolveStatus::Diverged) << r.method;
+    for (const Color& b : r.B) EXPECT_TRUE(gi::is_finite(b)) << r.method << ": stopped before overflow";
+  }
+}
+
+TEST(Solvers, ProgressiveConvergesAndItsUnshotEnergyFalls) {
+  const Cornell& c = cornell();
+  const gi::SolverResult direct = gi::solve_direct(c.system);
+  gi::SolverOptions options;
+  options.tolerance = 1e-6;
+  options.max_steps = 100000;
+  options.reference = &direct.B;
+  // Shooting uses F_jp = F_pj A_p / A_j. The hemicube matrix is not reciprocal (lesson
+  // 07), so to solve the very system the direct solver solves, p's row is made from
+  // its column: F_pj = F_jp A_j / A_p.
+  const gi::RadiositySystem& s = c.system;
+  const auto row = [&](int p) {
+    std::vector<double> f(s.size());
+    for (int j = 0; j < s.size(); ++j) f[j] = s.F(j, p) * s.area[j] / s.area[p];
+    return f;
+  };
+  const gi::SolverResult r = gi::solve_progressive(c.system, c.mesh, row, options);
+  EXPECT_EQ(r.status, gi::SolveStatus::Converged);
+  EXPECT_LT(r.history.back().error, 1e-5);
+}
+
+TEST(Solvers, EveryShotLowersTheUnshotEnergyWhenFormFactorsAreReciprocal) {
+  // 24 equal elements of a closed box, each seeing the others equally: a shot of
+  // power P leaves rho P unshot, so the unshot energy must fall at every step.
+  const gi::Mesh mesh = gi::make_mesh(gi::closed_box(1.0).surfaces, {0.5, 1});
+  const gi::RadiositySystem uniform = furnace(24, 0.6, 1.0);
+  gi::RadiositySystem s = gi::make_system(mesh, uniform.F);
+  s.emission.assign(24, Color(0));
+  s.emission[5] = Color(1.0);
+  const auto row = [&](int p) { return std::vector<double>(s.F.values.begin() + p * 24, s.F.values.begin() + (p + 1) * 24); };
+  gi::SolverOptions options;
+  options.tolerance = 1e-9;
+  const gi::SolverResult r = gi::solve_progressive(s, mesh, row, options);
+  EXPECT_EQ(r.status, gi::SolveStatus::Converged);
+  for (std::size_t k = 1; k < r.history.size(); ++k) EXPECT_LT(r.history[k].unshot, r.history[k - 1].unshot);
+  EXPECT_LT(max_difference(r.B, gi::solve_direct(s).B), 1e-8);
+}
+
+TEST(Solvers, AmbientTermMakesTheFirstFurnacePictureExact) {
+  // Before any shot B = E and all of E is unshot: B + rho * ambient = E / (1 - rho).
+  const gi::RadiositySystem s = furnace(6, 0.6, 1.0);
+  const std::vector<Color> shown = gi::with_ambient(s.area, s.rho, s.emission, s.emission);
+  for (const Color& b : shown) EXPECT_NEAR(b.z, 1.0 / 0.4, 1e-12);
+}
+
+TEST(Solvers, EnergyIsConservedInAClosedRoom) {
+  // Emitted power = absorbed power: sum A_i E_i = sum A_i (1 - rho_i) H_i, with the
+  // irradiance H_i = (B_i - E_i) / rho_i. Hemicube rows sum to 1 + 1e-4 at res 100.
+  const gi::Mesh mesh = gi::make_mesh(gi::closed_box(1.0).surfaces, {0.25, 1});
+  const gi::RadiositySystem s = gi::make_system(mesh, gi::form_factor_matrix_hemicube(shapes(mesh), 100, 2));
+  const gi::SolverResult r = gi::solve_direct(s);
+  double emitted = 0, absorbed = 0;
+  for (int i = 0; i < s.size(); ++i) {
+    emitted += s.area[i] * s.emission[i].x;
+    absorbed += s.area[i] * (1 - s.rho[i].x) * (r.B[i].x - s.emission[i].x) / s.rho[i].x;
+  }
+  EXPECT_NEAR(absorbed, emitted, 2e-3 * emitted);
+}
