@@ -4,12 +4,18 @@
 
 namespace gi {
 
-void shoot(const Color& unshot_p, double area_p, const std::vector<double>& F_p, const std::vector<double>& area,
+void shoot(const Patch& patch, const std::vector<double>& F_p, const std::vector<double>& area,
            const std::vector<Color>& rho, std::vector<Color>& B, std::vector<Color>& unshot) {
   // BEGIN EXERCISE 11.1 a progressive-refinement shot
+  Color unshot_p(0.0);
+  for (int e = patch.first_element; e < patch.first_element + patch.element_count; ++e) {
+    unshot_p += unshot[e] * area[e];
+    unshot[e] = Color(0.0);  // shot: it must not be shot again
+  }
+  unshot_p /= patch.shape.area;
   for (std::size_t j = 0; j < area.size(); ++j) {
     if (F_p[j] == 0) continue;
-    const Color received = rho[j] * unshot_p * (F_p[j] * area_p / area[j]);  // F_jp by reciprocity
+    const Color received = rho[j] * unshot_p * (F_p[j] * patch.shape.area / area[j]);  // F_jp by reciprocity
     B[j] += received;
     unshot[j] += received;
   }
@@ -55,14 +61,7 @@ SolverResult solve_progressive(const RadiositySystem& s, const Mesh& mesh, const
       const double total = power.x + power.y + power.z;
       if (total > most) most = total, shooter = p;
     }
-    const Patch& patch = mesh.patches[shooter];
-    Color unshot_p(0.0);  // the patch's unshot radiosity: its elements' area-weighted mean
-    for (int e = patch.first_element; e < patch.first_element + patch.element_count; ++e) {
-      unshot_p += unshot[e] * s.area[e];
-      unshot[e] = Color(0.0);
-    }
-    unshot_p /= patch.shape.area;
-    shoot(unshot_p, patch.shape.area, row(shooter), s.area, s.rho, B, unshot);
+    shoot(mesh.patches[shooter], row(shooter), s.area, s.rho, B, unshot);
     if (monitor.stop_after(step, B, unshot)) break;
   }
   return monitor.finish(std::move(B), std::move(unshot));

@@ -20,10 +20,11 @@ namespace gi {
 // The form factors from patch p to every element, computed when p shoots.
 using ShooterRow = std::function<std::vector<double>(int patch)>;
 
-// One shot: the patch (area `area_p`, unshot radiosity `unshot_p`) sends to every
-// element j. Adds to B and to the elements' unshot radiosity; the caller clears the
-// shooter's own elements' unshot (done in solve_progressive, before the shot).
-void shoot(const Color& unshot_p, double area_p, const std::vector<double>& F_p, const std::vector<double>& area,
+// One shot from `patch`: its unshot radiosity dB_p is the area-weighted mean of its
+// elements' unshot radiosities, which are cleared (shot); every element j then
+// receives rho_j dB_p F_pj A_p / A_j into both its radiosity B_j and its unshot
+// radiosity. F_p holds F_pj for every element j.
+void shoot(const Patch& patch, const std::vector<double>& F_p, const std::vector<double>& area,
            const std::vector<Color>& rho, std::vector<Color>& B, std::vector<Color>& unshot);
 
 // The ambient term, for display only: the light not yet shot, spread evenly and

@@ -1,0 +1,69 @@
+// Graded tests of exercise 8.1: vertex colours from element radiosities. One point per test.
+#include <gtest/gtest.h>
+
+#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/vertex_colours.hpp"
+
+using gi::Color;
+using gi::vec3;
+
+namespace {
+// Two elements sharing the edge x = 1: [0,1] x [0,1] (area 1) and [1,4] x [0,1] (area 3).
+gi::Mesh two_elements() {
+  gi::Mesh mesh;
+  mesh.surfaces = {gi::Surface{"strip", {vec3(0, 0, 0), vec3(4, 0, 0), vec3(4, 1, 0), vec3(0, 1, 0)}, Color(0.5)}};
+  mesh.vertices = {vec3(0, 0, 0), vec3(1, 0, 0), vec3(4, 0, 0), vec3(0, 1, 0), vec3(1, 1, 0), vec3(4, 1, 0)};
+  const auto element = [&](std::array<int, 4> v) {
+    return gi::Element{gi::make_polygon({mesh.vertices[v[0]], mesh.vertices[v[1]], mesh.vertices[v[2]],
+                                         mesh.vertices[v[3]]}),
+                       0, 0, v};
+  };
+  mesh.elements = {element({0, 1, 4, 3}), element({1, 2, 5, 4})};
+  return mesh;
+}
+}  // namespace
+
+TEST(Ex8_1_VertexColours, OneValuePerVertex) {
+  const gi::Mesh mesh = two_elements();
+  EXPECT_EQ(gi::vertex_radiosity(mesh, {Color(1), Color(2)}).size(), mesh.vertices.size())
+      << "return one radiosity per mesh vertex, indexed like mesh.vertices";
+}
+
+TEST(Ex8_1_VertexColours, UnsharedVerticesKeepTheirElementsValue) {
+  const std::vector<Color> v = gi::vertex_radiosity(two_elements(), {Color(1), Color(2)});
+  EXPECT_EQ(v[0], Color(1));
+  EXPECT_EQ(v[2], Color(2)) << "a vertex of one element only takes that element's radiosity";
+}
+
+TEST(Ex8_1_VertexColours, SharedVerticesAreAreaWeighted) {
+  const std::vector<Color> v = gi::vertex_radiosity(two_elements(), {Color(1), Color(2)});
+  EXPECT_NEAR(v[1].x, (1 * 1.0 + 3 * 2.0) / 4, 1e-12)
+      << "weight each element by its area: (A_1 B_1 + A_2 B_2) / (A_1 + A_2), not the plain mean 1.5";
+  EXPECT_NEAR(v[4].x, 1.75, 1e-12);
+}
+
+TEST(Ex8_1_VertexColours, ChannelsAreAveragedSeparately) {
+  const std::vector<Color> v = gi::vertex_radiosity(two_elements(), {Color(1, 0, 0), Color(0, 0, 4)});
+  EXPECT_NEAR(v[1].x, 0.25, 1e-12);
+  EXPECT_NEAR(v[1].y, 0.0, 1e-12);
+  EXPECT_NEAR(v[1].z, 3.0, 1e-12);
+}
+
+TEST(Ex8_1_VertexColours, AConstantFieldStaysConstant) {
+  const gi::Mesh mesh = gi::make_mesh(gi::cornell_box().surfaces, {150.0, 2});
+  const std::vector<Color> v = gi::vertex_radiosity(mesh, std::vector<Color>(mesh.elements.size(), Color(0.7)));
+  for (const Color& c : v) ASSERT_NEAR(c.y, 0.7, 1e-12) << "divide by the summed weights";
+}
+
+TEST(Ex8_1_VertexColours, SurfacesDoNotBleedIntoEachOther) {
+  // Each face of the box its own radiosity: its vertices -- shared only within the face
+  // -- must all have the face's value, even on the box's edges.
+  const gi::Mesh mesh = gi::make_mesh(gi::closed_box(1.0).surfaces, {0.5, 1});
+  std::vector<Color> B;
+  for (const gi::Element& e : mesh.elements) B.push_back(Color(e.surface + 1.0));
+  const std::vector<Color> v = gi::vertex_radiosity(mesh, B);
+  for (const gi::Element& e : mesh.elements)
+    for (int k : e.vertices)
+      ASSERT_EQ(v[k], Color(e.surface + 1.0)) << "use the mesh's vertex indices (shared within a surface only); "
+                                                  "merging vertices by position blurs the corners between walls";
+}

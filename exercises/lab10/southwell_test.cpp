@@ -1,0 +1,67 @@
+// Graded tests of exercise 10.1: a Southwell step with the incremental residual
+// update. One point per test.
+#include <gtest/gtest.h>
+
+#include "gi/radiosity/solvers.hpp"
+
+using gi::Color;
+
+namespace {
+gi::RadiositySystem three() {
+  gi::RadiositySystem s;
+  s.area = {1.0, 2.0, 0.5};
+  s.rho = {Color(0.5, 0.4, 0.3), Color(0.8), Color(0.2, 0.6, 0.9)};
+  s.emission = {Color(1.0), Color(0.0), Color(0.0, 0.5, 0.0)};
+  s.F = {3, {0.0, 0.5, 0.2, 0.25, 0.0, 0.1, 0.4, 0.4, 0.0}};
+  return s;
+}
+}  // namespace
+
+TEST(Ex10_1_Southwell, PicksTheLargestResidual) {
+  const gi::RadiositySystem s = three();
+  std::vector<Color> B(3, Color(0.0)), r = {Color(0.1), Color(-0.5), Color(0.3)};
+  EXPECT_EQ(gi::southwell_step(s, B, r), 1) << "the largest |r_i|: a negative residual counts by its size";
+}
+
+TEST(Ex10_1_Southwell, LooksAtEveryChannel) {
+  const gi::RadiositySystem s = three();
+  std::vector<Color> B(3, Color(0.0)), r = {Color(0.2), Color(0.1, 0.1, 0.9), Color(0.3)};
+  EXPECT_EQ(gi::southwell_step(s, B, r), 1) << "element 1's blue residual 0.9 is the largest";
+}
+
+TEST(Ex10_1_Southwell, RelaxesTheChosenElement) {
+  const gi::RadiositySystem s = three();
+  std::vector<Color> B = {Color(0.5), Color(0.0), Color(0.0)}, r = {Color(2.0), Color(0.1), Color(0.3)};
+  gi::southwell_step(s, B, r);
+  EXPECT_NEAR(B[0].x, 2.5, 1e-12) << "B_i += r_i";
+  EXPECT_EQ(r[0], Color(0.0)) << "after relaxing, r_i = 0 (F_ii = 0)";
+}
+
+TEST(Ex10_1_Southwell, UpdatesTheOthersThroughColumnI) {
+  const gi::RadiositySystem s = three();
+  std::vector<Color> B(3, Color(0.0)), r = {Color(2.0), Color(0.1), Color(0.3)};
+  gi::southwell_step(s, B, r);
+  // r_j += rho_j F_j0 * 2: F_10 = 0.25, F_20 = 0.4 (not F_01 = 0.5, F_02 = 0.2).
+  EXPECT_NEAR(r[1].x, 0.1 + 0.8 * 0.25 * 2.0, 1e-12) << "element j gathers from i through F_ji (column i of F)";
+  EXPECT_NEAR(r[2].z, 0.3 + 0.9 * 0.4 * 2.0, 1e-12) << "and its own reflectance rho_j";
+}
+
+TEST(Ex10_1_Southwell, ResidualStaysTheTrueResidual) {
+  const gi::RadiositySystem s = three();
+  std::vector<Color> B(3, Color(0.0)), r = s.emission;
+  for (int step = 0; step < 25; ++step) gi::southwell_step(s, B, r);
+  const std::vector<Color> truth = gi::residual(s, B);
+  for (int i = 0; i < 3; ++i)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(r[i][c], truth[i][c], 1e-12) << "the incremental update must keep r = E - (I - RF) B";
+}
+
+TEST(Ex10_1_Southwell, SolverConvergesToTheDirectSolution) {
+  const gi::RadiositySystem s = three();
+  gi::SolverOptions options;
+  options.tolerance = 1e-12;
+  options.max_steps = 10000;
+  const gi::SolverResult r = gi::solve_southwell(s, options), direct = gi::solve_direct(s);
+  ASSERT_EQ(r.status, gi::SolveStatus::Converged);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(r.B[i].z, direct.B[i].z, 1e-10);
+}
