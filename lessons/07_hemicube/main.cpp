@@ -20,12 +20,6 @@
 
 namespace {
 
-std::vector<gi::Polygon> element_shapes(const gi::Mesh& mesh) {
-  std::vector<gi::Polygon> shapes;
-  for (const gi::Element& e : mesh.elements) shapes.push_back(e.shape);
-  return shapes;
-}
-
 // The floor element nearest (180, 0, 420): behind the short block, beside the tall one.
 int floor_element(const gi::Mesh& mesh) {
   const gi::vec3 spot(180, 0, 420);
@@ -51,7 +45,7 @@ gi::Pixel element_colour(const gi::Mesh& mesh, int element) {
 
 // 1. What one hemicube sees, and the weights of its cells.
 void hemicube_pictures(const gi::Mesh& mesh, int resolution, const std::string& out) {
-  const std::vector<gi::Polygon> shapes = element_shapes(mesh);
+  const std::vector<gi::Polygon> shapes = gi::element_shapes(mesh);
   const int from = floor_element(mesh);
   gi::ItemBuffer buffer;
   gi::render_item_buffer(shapes, shapes[from].centre, shapes[from].normal, resolution, buffer);
@@ -107,7 +101,7 @@ int main(int argc, char** argv) {
     const std::string& out = common.out;
     const gi::RadiosityScene scene = gi::cornell_box(true);  // closed: rows must sum to 1
     const gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, elements, 1), 1});
-    const std::vector<gi::Polygon> shapes = element_shapes(mesh);
+    const std::vector<gi::Polygon> shapes = gi::element_shapes(mesh);
     std::vector<double> areas;
     for (const gi::Polygon& p : shapes) areas.push_back(p.area);
 
@@ -144,7 +138,7 @@ int main(int argc, char** argv) {
 
     // 3. The speed figure: one row against a finely meshed box, one thread.
     const gi::Mesh fine = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, speed_elements, 1), 1});
-    const std::vector<gi::Polygon> fine_shapes = element_shapes(fine);
+    const std::vector<gi::Polygon> fine_shapes = gi::element_shapes(fine);
     const gi::HemicubeWeights weights = gi::hemicube_weights(100);
     gi::ItemBuffer buffer;
     std::vector<double> times;

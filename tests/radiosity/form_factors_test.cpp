@@ -95,8 +95,7 @@ TEST(FormFactors, HemicubeAgreesWithTheClosedFormsAtResolution100) {
   EXPECT_NEAR(hemicube(par, 0, 1, 100), point, 1e-2 * point);
   // Finely meshed, the element rows average to the patch-to-patch factor.
   const gi::Mesh mesh = gi::make_mesh(gi::perpendicular_squares(1.0).surfaces, {1.0, 8});
-  std::vector<gi::Polygon> elements;
-  for (const gi::Element& e : mesh.elements) elements.push_back(e.shape);
+  const std::vector<gi::Polygon> elements = gi::element_shapes(mesh);
   gi::ItemBuffer buffer;
   const gi::HemicubeWeights w = gi::hemicube_weights(100);
   double f = 0;
@@ -113,8 +112,7 @@ TEST(FormFactors, HemicubeRowsSumToOneInAClosedBoxAndLessInAnOpenOne) {
   const gi::HemicubeWeights w = gi::hemicube_weights(100);
   gi::ItemBuffer buffer;
   for (const gi::Mesh* mesh : {&closed, &open}) {
-    std::vector<gi::Polygon> elements;
-    for (const gi::Element& e : mesh->elements) elements.push_back(e.shape);
+    const std::vector<gi::Polygon> elements = gi::element_shapes(*mesh);
     double lowest = 2, highest = 0;
     for (const gi::Polygon& from : elements) {
       const std::vector<double> row = gi::form_factor_row_hemicube(elements, from, w, buffer);

@@ -24,12 +24,6 @@ gi::RadiositySystem furnace(int n, double rho, double e) {
   return s;
 }
 
-std::vector<gi::Polygon> shapes(const gi::Mesh& mesh) {
-  std::vector<gi::Polygon> out;
-  for (const gi::Element& e : mesh.elements) out.push_back(e.shape);
-  return out;
-}
-
 // The Cornell box at ~150 elements with hemicube form factors.
 struct Cornell {
   gi::Mesh mesh;
@@ -39,7 +33,7 @@ const Cornell& cornell() {
   static const Cornell c = [] {
     const gi::RadiosityScene scene = gi::cornell_box();
     gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, 150, 1), 1});
-    gi::FormFactorMatrix F = gi::form_factor_matrix_hemicube(shapes(mesh), 50, 2);
+    gi::FormFactorMatrix F = gi::form_factor_matrix_hemicube(gi::element_shapes(mesh), 50, 2);
     gi::RadiositySystem system = gi::make_system(mesh, std::move(F));
     return Cornell{std::move(mesh), std::move(system)};
   }();
@@ -188,7 +182,7 @@ TEST(Solvers, EnergyIsConservedInAClosedRoom) {
   // Emitted power = absorbed power: sum A_i E_i = sum A_i (1 - rho_i) H_i, with the
   // irradiance H_i = (B_i - E_i) / rho_i. Hemicube rows sum to 1 + 1e-4 at res 100.
   const gi::Mesh mesh = gi::make_mesh(gi::closed_box(1.0).surfaces, {0.25, 1});
-  const gi::RadiositySystem s = gi::make_system(mesh, gi::form_factor_matrix_hemicube(shapes(mesh), 100, 2));
+  const gi::RadiositySystem s = gi::make_system(mesh, gi::form_factor_matrix_hemicube(gi::element_shapes(mesh), 100, 2));
   const gi::SolverResult r = gi::solve_direct(s);
   double emitted = 0, absorbed = 0;
   for (int i = 0; i < s.size(); ++i) {

@@ -64,6 +64,13 @@ Mesh make_mesh(const std::vector<Surface>& surfaces, const MeshSettings& setting
   return mesh;
 }
 
+std::vector<Polygon> element_shapes(const Mesh& mesh) {
+  std::vector<Polygon> shapes;
+  shapes.reserve(mesh.elements.size());
+  for (const Element& e : mesh.elements) shapes.push_back(e.shape);
+  return shapes;
+}
+
 double patch_size_for(const std::vector<Surface>& surfaces, int elements, int elements_per_side) {
   if (elements < 1) throw std::invalid_argument("mesh: the element count must be >= 1");
   double area = 0;

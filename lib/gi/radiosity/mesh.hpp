@@ -63,6 +63,9 @@ struct MeshSettings {
 // make_polygon; reflectance or emission negative or not finite) or more than 10^6 elements.
 Mesh make_mesh(const std::vector<Surface>& surfaces, const MeshSettings& settings);
 
+// The elements' shapes, in order: what form factors are computed between.
+std::vector<Polygon> element_shapes(const Mesh& mesh);
+
 // The patch size that gives about `elements` elements with n x n elements per patch.
 double patch_size_for(const std::vector<Surface>& surfaces, int elements, int elements_per_side);
 
