@@ -2,6 +2,7 @@
 // update the other residuals incrementally in O(n). Compared with Jacobi and
 // Gauss-Seidel by the work done (one sweep = n^2 multiply-adds = n Southwell steps)
 // and by time.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -17,22 +18,15 @@
 
 namespace {
 
-// Error against work in sweeps: an iteration is one sweep, a Southwell step 1/n.
-gi::Series by_work(const gi::SolverResult& r, double steps_per_sweep) {
+// Error against work in sweeps (an iteration is one sweep, a Southwell step 1/n) or
+// against time; a point every `every` steps keeps the chart light.
+gi::Series curve(const gi::SolverResult& r, double steps_per_sweep, bool against_time, int every) {
   gi::Series s{r.method, {}, {}};
-  for (const gi::SolverStep& step : r.history) {
-    s.x.push_back(step.step / steps_per_sweep);
-    s.y.push_back(step.error);
-  }
-  return s;
-}
-
-gi::Series by_time(const gi::SolverResult& r) {
-  gi::Series s{r.method, {}, {}};
-  for (const gi::SolverStep& step : r.history) {
-    s.x.push_back(1e3 * step.seconds);
-    s.y.push_back(step.error);
-  }
+  for (const gi::SolverStep& step : r.history)
+    if (step.step % every == 0) {
+      s.x.push_back(against_time ? 1e3 * step.seconds : step.step / steps_per_sweep);
+      s.y.push_back(step.error);
+    }
   return s;
 }
 
@@ -105,10 +99,12 @@ int main(int argc, char** argv) {
 
     gi::write_svg({"Error against work (1 sweep = n^2 multiply-adds = n Southwell steps)", "sweeps of work",
                    "RMS error / RMS B", false, true,
-                   {by_work(jacobi, 1), by_work(gauss_seidel, 1), by_work(southwell, n)}},
+                   {curve(jacobi, 1, false, 1), curve(gauss_seidel, 1, false, 1),
+                    curve(southwell, n, false, std::max(1, n / 16))}},
                   out + "/error_vs_work.svg");
     gi::write_svg({"Error against time", "solver time (ms)", "RMS error / RMS B", false, true,
-                   {by_time(jacobi), by_time(gauss_seidel), by_time(southwell)}},
+                   {curve(jacobi, 1, true, 1), curve(gauss_seidel, 1, true, 1),
+                    curve(southwell, n, true, std::max(1, n / 16))}},
                   out + "/error_vs_time.svg");
     std::cout << "\ntables and charts: " << out << "/\n";
     return 0;

@@ -1,0 +1,145 @@
+#include "gi/accel/world.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+#include "gi/accel/bvh_traverse.hpp"
+
+namespace gi {
+
+namespace {
+
+// Brute force over one kind of primitive. Each hit shortens the ray, so later
+// primitives only count when nearer.
+template <class Primitive>
+void closest_in(const std::vector<Primitive>& primitives, Ray& ray, std::optional<Hit>& nearest,
+                TraversalCounts& counts) {
+  for (const Primitive& primitive : primitives) {
+    ++counts.primitive_tests;
+    if (auto hit = intersect(ray, primitive)) {
+      ray.t_max = hit->t;
+      nearest = hit;
+    }
+  }
+}
+
+template <class Primitive>
+bool any_in(const std::vector<Primitive>& primitives, const Ray& ray, TraversalCounts& counts) {
+  for (const Primitive& primitive : primitives) {
+    ++counts.primitive_tests;
+    if (intersect(ray, primitive)) return true;
+  }
+  return false;
+}
+
+// A bounding box per object: the slab test first, the object only when its box is hit.
+// Flattened like the tree's traversal (bvh_traverse.cpp): a call per box test would
+// cost as much as the test.
+template <class Primitive>
+[[gnu::flatten]] void closest_in_boxes(const std::vector<Primitive>& primitives, const Aabb* boxes, Ray& ray, const vec3& inv_dir,
+                      std::optional<Hit>& nearest, TraversalCounts& counts) {
+  for (std::size_t i = 0; i < primitives.size(); ++i) {
+    ++counts.box_tests;
+    if (!slab_test(ray, inv_dir, boxes[i])) continue;
+    ++counts.primitive_tests;
+    if (auto hit = intersect(ray, primitives[i])) {
+      ray.t_max = hit->t;
+      nearest = hit;
+    }
+  }
+}
+
+template <class Primitive>
+[[gnu::flatten]] bool any_in_boxes(const std::vector<Primitive>& primitives, const Aabb* boxes, const Ray& ray, const vec3& inv_dir,
+                  TraversalCounts& counts) {
+  for (std::size_t i = 0; i < primitives.size(); ++i) {
+    ++counts.box_tests;
+    if (!slab_test(ray, inv_dir, boxes[i])) continue;
+    ++counts.primitive_tests;
+    if (intersect(ray, primitives[i])) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::string name(Acceleration acceleration) {
+  switch (acceleration) {
+    case Acceleration::BruteForce: return "brute-force";
+    case Acceleration::BoundingBoxes: return "bounding-boxes";
+    case Acceleration::Bvh: return "bvh";
+  }
+  throw std::invalid_argument("unknown acceleration");
+}
+
+std::vector<std::string> acceleration_names() {
+  return {name(Acceleration::BruteForce), name(Acceleration::BoundingBoxes), name(Acceleration::Bvh)};
+}
+
+Acceleration acceleration_from_name(const std::string& text) {
+  for (Acceleration a : {Acceleration::BruteForce, Acceleration::BoundingBoxes, Acceleration::Bvh})
+    if (name(a) == text) return a;
+  throw std::invalid_argument("unknown acceleration '" + text + "' (known: brute-force, bounding-boxes, bvh)");
+}
+
+World make_world(Scene scene, Acceleration acceleration, const BvhSettings& settings) {
+  World world{std::move(scene), acceleration, {}, {}};
+  if (acceleration == Acceleration::Bvh) world.bvh = build_bvh(world.scene, settings);
+  if (acceleration == Acceleration::BoundingBoxes) {
+    world.boxes.reserve(world.scene.spheres.size() + world.scene.quads.size());
+    for (const Sphere& sphere : world.scene.spheres) world.boxes.push_back(bounds(sphere));
+    for (const Quad& quad : world.scene.quads) world.boxes.push_back(bounds(quad));
+  }
+  return world;
+}
+
+// The counts go to a local first: with counts == nullptr that costs a few register
+// increments per ray, and no branch in the inner loops.
+std::optional<Hit> closest_hit(const World& world, Ray ray, TraversalCounts* counts) {
+  const Scene& scene = world.scene;
+  TraversalCounts local;
+  std::optional<Hit> nearest;
+  switch (world.acceleration) {
+    case Acceleration::BruteForce:
+      closest_in(scene.spheres, ray, nearest, local);
+      closest_in(scene.quads, ray, nearest, local);
+      break;
+    case Acceleration::BoundingBoxes: {
+      const vec3 inv_dir = 1.0 / ray.direction;
+      closest_in_boxes(scene.spheres, world.boxes.data(), ray, inv_dir, nearest, local);
+      closest_in_boxes(scene.quads, world.boxes.data() + scene.spheres.size(), ray, inv_dir, nearest, local);
+      break;
+    }
+    case Acceleration::Bvh:
+      nearest = closest_hit(world.bvh, scene, ray, local);  // leaves ray.t_max at its hit
+      break;
+  }
+  closest_in(scene.planes, ray, nearest, local);
+  if (counts) *counts += local;
+  return nearest;
+}
+
+bool any_hit(const World& world, const Ray& ray, TraversalCounts* counts) {
+  const Scene& scene = world.scene;
+  TraversalCounts local;
+  bool hit = false;
+  switch (world.acceleration) {
+    case Acceleration::BruteForce:
+      hit = any_in(scene.spheres, ray, local) || any_in(scene.quads, ray, local);
+      break;
+    case Acceleration::BoundingBoxes: {
+      const vec3 inv_dir = 1.0 / ray.direction;
+      hit = any_in_boxes(scene.spheres, world.boxes.data(), ray, inv_dir, local) ||
+            any_in_boxes(scene.quads, world.boxes.data() + scene.spheres.size(), ray, inv_dir, local);
+      break;
+    }
+    case Acceleration::Bvh:
+      hit = any_hit(world.bvh, scene, ray, local);
+      break;
+  }
+  hit = hit || any_in(scene.planes, ray, local);
+  if (counts) *counts += local;
+  return hit;
+}
+
+}  // namespace gi

@@ -1,0 +1,46 @@
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gi/accel/bvh.hpp"
+#include "gi/accel/traversal_counts.hpp"
+
+namespace gi {
+
+// The lecture's three ways to find what a ray hits, fastest last:
+//   BruteForce     test the ray against every primitive: N tests per ray
+//   BoundingBoxes  a box around each object, tested first; the object itself only
+//                  when its box is hit. Still N tests, but a box test is cheaper than
+//                  most objects' own
+//   Bvh            boxes around boxes (bvh.hpp): about log N tests per ray
+// All three find the same hits.
+enum class Acceleration { BruteForce, BoundingBoxes, Bvh };
+
+std::string name(Acceleration acceleration);  // "brute-force", "bounding-boxes", "bvh"
+std::vector<std::string> acceleration_names();
+// Throws std::invalid_argument, listing the names, when `name` is not one of them.
+Acceleration acceleration_from_name(const std::string& name);
+
+// What the ray tracer casts its rays into: a scene and the structure that speeds up
+// its ray queries. Planes are unbounded, so every method tests them one by one.
+struct World {
+  Scene scene;
+  Acceleration acceleration = Acceleration::Bvh;
+  Bvh bvh;                  // Acceleration::Bvh only
+  std::vector<Aabb> boxes;  // Acceleration::BoundingBoxes only: the spheres' boxes, then the quads'
+};
+
+// Takes the scene and builds what the acceleration needs: the tree (with `settings`)
+// or one box per object. Throws std::invalid_argument for settings out of range.
+World make_world(Scene scene, Acceleration acceleration = Acceleration::Bvh, const BvhSettings& settings = {});
+
+// The nearest hit with t in [ray.t_min, ray.t_max], or nothing: whatever the
+// acceleration, the hit brute force finds (scene_intersect.hpp), up to which of two
+// surfaces at exactly the same t is reported. `counts`, when given, is added to.
+std::optional<Hit> closest_hit(const World& world, Ray ray, TraversalCounts* counts = nullptr);
+
+// Shadow-ray query: is anything hit with t in [t_min, t_max]? Stops at the first hit.
+bool any_hit(const World& world, const Ray& ray, TraversalCounts* counts = nullptr);
+
+}  // namespace gi

@@ -1,0 +1,41 @@
+#pragma once
+#include <limits>
+#include <optional>
+
+#include "gi/core/ray.hpp"
+#include "gi/geometry/quad.hpp"
+#include "gi/geometry/sphere.hpp"
+
+namespace gi {
+
+// An axis-aligned bounding box: the points x with lo <= x <= hi in every axis.
+// The default box is empty (lo = +inf, hi = -inf), so growing it by a first point
+// or box gives exactly that point or box.
+struct Aabb {
+  vec3 lo{std::numeric_limits<double>::infinity()};
+  vec3 hi{-std::numeric_limits<double>::infinity()};
+};
+
+bool is_empty(const Aabb& box);
+void grow(Aabb& box, const vec3& point);
+void grow(Aabb& box, const Aabb& other);
+Aabb surrounding(const Aabb& a, const Aabb& b);  // the smallest box holding both
+vec3 centroid(const Aabb& box);
+double surface_area(const Aabb& box);  // 0 for an empty box
+
+// The tightest boxes around the shapes. A quad's box is flat (zero thickness) when
+// the quad lies in an axis-aligned plane, as walls and floors do.
+Aabb bounds(const Sphere& sphere);
+Aabb bounds(const Quad& quad);
+
+// The slab test (Kay and Kajiya 1986): the box is the intersection of three slabs,
+// lo.x <= x <= hi.x and so on; the ray is inside each slab for an interval of t, and
+// inside the box where all three intervals and [ray.t_min, ray.t_max] overlap.
+// `inv_dir` is 1 / ray.direction per component, computed once per ray: a box test
+// then multiplies instead of divides. Returns the distance at which the ray enters
+// the box, clipped to ray.t_min (so a ray starting inside gets t_min), or nothing
+// when the overlap is empty. The box is closed: a ray grazing a face or an edge, or
+// running inside a face's plane, hits it.
+std::optional<double> slab_test(const Ray& ray, const vec3& inv_dir, const Aabb& box);
+
+}  // namespace gi
