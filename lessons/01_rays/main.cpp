@@ -15,7 +15,7 @@
 #include "gi/report/options.hpp"
 #include "gi/report/table.hpp"
 #include "gi/scene/builtin_scenes.hpp"
-#include "gi/scene/scene_intersect.hpp"
+#include "gi/accel/world.hpp"
 
 namespace {
 
@@ -45,16 +45,16 @@ gi::Table worked_cases(const std::string& title, const Shape& shape, const std::
 }
 
 // The three pictures of what the eye rays hit.
-void draw_eye_rays(const gi::Scene& scene, int width, int height, int threads, const std::string& out) {
-  const gi::CameraFrame frame = gi::camera_frame(scene.camera, width, height);
+void draw_eye_rays(const gi::World& world, int width, int height, int threads, const std::string& out) {
+  const gi::CameraFrame frame = gi::camera_frame(world.scene.camera, width, height);
   gi::Image hit_or_miss(width, height), normals(width, height);
   std::vector<double> distance(static_cast<std::size_t>(width) * height, 0.0);
   // Depth in false colour: red near the eye through yellow, green and blue to black
   // at twice the distance to the point the camera looks at, and for misses.
-  const double far = 2.0 * gi::length(scene.camera.look_at - scene.camera.eye);
+  const double far = 2.0 * gi::length(world.scene.camera.look_at - world.scene.camera.eye);
   gi::parallel_for(height, threads, [&](int y) {
     for (int x = 0; x < width; ++x) {
-      const auto hit = gi::closest_hit(scene, gi::primary_ray(frame, x + 0.5, y + 0.5));
+      const auto hit = gi::closest_hit(world, gi::primary_ray(frame, x + 0.5, y + 0.5));
       if (!hit) continue;
       hit_or_miss.at(x, y) = gi::Pixel(1);
       normals.at(x, y) = gi::Pixel(0.5 * hit->normal + 0.5);  // [-1, 1] -> [0, 1] per axis
@@ -71,11 +71,13 @@ void draw_eye_rays(const gi::Scene& scene, int width, int height, int threads, c
 int main(int argc, char** argv) {
   return gi::run_lesson("01_rays", [&] {
     gi::CommonOptions common;
+    std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
     int width = 480, height = 360;
     std::string scene_name = "spheres";
     gi::Options options("01_rays", "Ray-sphere and ray-plane intersection: worked cases and eye-ray images.");
     gi::add_common_options(options, common, "01_rays");
     options.add("--width", width, "image width in pixels", 1, 8192)
+        .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
         .add("--height", height, "image height in pixels", 1, 8192)
         .add("--scene", scene_name, "scene to draw", gi::scene_names());
     if (!options.parse(argc, argv)) return 0;
@@ -104,7 +106,8 @@ int main(int argc, char** argv) {
     spheres.write_csv(common.out + "/ray_sphere.csv");
     planes.write_csv(common.out + "/ray_plane.csv");
 
-    draw_eye_rays(gi::make_scene(scene_name), width, height, common.threads, common.out);
+    const gi::World world = gi::make_world(gi::make_scene(scene_name), gi::acceleration_from_name(accel));
+    draw_eye_rays(world, width, height, common.threads, common.out);
     std::cout << "\nimages: " << common.out << "/{hit_or_miss,normals,depth}.png\n";
     return 0;
   });

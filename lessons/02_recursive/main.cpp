@@ -40,11 +40,11 @@ std::vector<gi::Cell> ray_row(const gi::Cell& first, const gi::RenderResult& r, 
 }
 
 // Renders `repeat` times and keeps the run with the median time.
-gi::RenderResult render_median(const gi::Scene& scene, const gi::RenderSettings& settings, int repeat,
+gi::RenderResult render_median(const gi::World& world, const gi::RenderSettings& settings, int repeat,
                                gi::Progress* progress = nullptr) {
   std::vector<gi::RenderResult> runs;
   for (int i = 0; i < repeat; ++i) {
-    runs.push_back(gi::render(scene, settings));
+    runs.push_back(gi::render(world, settings));
     if (progress) progress->advance();
   }
   std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
@@ -59,15 +59,15 @@ struct Sweep {
 };
 
 // Depth limits 0..max_depth against the reference; writes each image.
-Sweep depth_sweep(const gi::Scene& scene, gi::RenderSettings settings, int max_depth, int repeat,
+Sweep depth_sweep(const gi::World& world, gi::RenderSettings settings, int max_depth, int repeat,
                   const gi::RenderResult& reference, const std::string& out, gi::Progress& progress) {
-  Sweep sweep{gi::Table("Depth limits, scene " + scene.name + " (reference: depth " +
+  Sweep sweep{gi::Table("Depth limits, scene " + world.scene.name + " (reference: depth " +
                             std::to_string(settings.trace.max_depth) + ")",
                         ray_columns("depth")),
               {"depth limit 0.." + std::to_string(max_depth), {}, {}}};
   for (int depth = 0; depth <= max_depth; ++depth) {
     settings.trace.max_depth = depth;
-    const gi::RenderResult r = render_median(scene, settings, repeat, &progress);
+    const gi::RenderResult r = render_median(world, settings, repeat, &progress);
     sweep.table.add_row(ray_row(depth, r, &reference.image));
     sweep.series.x.push_back(1e3 * r.seconds);
     sweep.series.y.push_back(gi::rmse(r.image, reference.image));
@@ -78,14 +78,14 @@ Sweep depth_sweep(const gi::Scene& scene, gi::RenderSettings settings, int max_d
 }
 
 // Contribution thresholds at the reference's depth limit.
-Sweep threshold_sweep(const gi::Scene& scene, gi::RenderSettings settings, const std::vector<double>& thresholds,
+Sweep threshold_sweep(const gi::World& world, gi::RenderSettings settings, const std::vector<double>& thresholds,
                       int repeat, const gi::RenderResult& reference, gi::Progress& progress) {
   Sweep sweep{gi::Table("Contribution thresholds at depth limit " + std::to_string(settings.trace.max_depth),
                         ray_columns("threshold")),
               {"contribution threshold", {}, {}}};
   for (double threshold : thresholds) {
     settings.trace.min_contribution = threshold;
-    const gi::RenderResult r = render_median(scene, settings, repeat, &progress);
+    const gi::RenderResult r = render_median(world, settings, repeat, &progress);
     sweep.table.add_row(ray_row(threshold, r, &reference.image));
     sweep.series.x.push_back(1e3 * r.seconds);
     sweep.series.y.push_back(gi::rmse(r.image, reference.image));
@@ -105,6 +105,7 @@ gi::Table rays_per_depth(const gi::RayCounts& counts) {
 int main(int argc, char** argv) {
   return gi::run_lesson("02_recursive", [&] {
     gi::CommonOptions common;
+    std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
     gi::RenderSettings settings;
     std::string scene_name = "whitted";
     std::optional<int> single_depth;
@@ -113,6 +114,7 @@ int main(int argc, char** argv) {
                         "Whitted ray tracing at depth limits 0..N and contribution thresholds, against a deep reference.");
     gi::add_common_options(options, common, "02_recursive");
     options.add("--width", settings.width, "image width in pixels", 1, 8192)
+        .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
         .add("--height", settings.height, "image height in pixels", 1, 8192)
         .add("--scene", scene_name, "scene to render", gi::scene_names())
         .add("--max-depth", max_depth, "sweep depth limits 0..N", 0, 40)
@@ -121,12 +123,12 @@ int main(int argc, char** argv) {
         .add("--repeat", repeat, "renders per measurement; the median time is reported", 1, 50);
     if (!options.parse(argc, argv)) return 0;
     settings.threads = common.threads;
-    const gi::Scene scene = gi::make_scene(scene_name);
+    const gi::World world = gi::make_world(gi::make_scene(scene_name), gi::acceleration_from_name(accel));
     const std::string out = common.out;
 
     if (single_depth) {  // one render, for timing against another renderer
       settings.trace.max_depth = *single_depth;
-      const gi::RenderResult r = render_median(scene, settings, repeat);
+      const gi::RenderResult r = render_median(world, settings, repeat);
       gi::Table table("Scene " + scene_name + ", depth limit " + std::to_string(*single_depth) + ", " +
                           std::to_string(settings.width) + "x" + std::to_string(settings.height) + ", median of " +
                           std::to_string(repeat),
@@ -140,11 +142,11 @@ int main(int argc, char** argv) {
     const std::vector<double> thresholds{0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.003, 0.001};
     gi::Progress progress("rendering", 1 + (max_depth + 1 + static_cast<long long>(thresholds.size())) * repeat);
     settings.trace.max_depth = reference_depth;
-    const gi::RenderResult reference = gi::render(scene, settings);
+    const gi::RenderResult reference = gi::render(world, settings);
     progress.advance();
     gi::write_png(reference.image, out + "/reference.png");
-    const Sweep depths = depth_sweep(scene, settings, max_depth, repeat, reference, out, progress);
-    const Sweep cutoffs = threshold_sweep(scene, settings, thresholds, repeat, reference, progress);
+    const Sweep depths = depth_sweep(world, settings, max_depth, repeat, reference, out, progress);
+    const Sweep cutoffs = threshold_sweep(world, settings, thresholds, repeat, reference, progress);
     progress.finish();
 
     const gi::Table per_depth = rays_per_depth(reference.counts);

@@ -38,13 +38,13 @@ std::vector<Method> methods() {
 }
 
 // The reference: many jittered samples per pixel, computed once and kept in out/.
-gi::Image reference_image(const gi::Scene& scene, gi::RenderSettings settings, int n, const std::string& out) {
+gi::Image reference_image(const gi::World& world, gi::RenderSettings settings, int n, const std::string& out) {
   settings.sampling = {gi::Sampler::Jittered, n};
   settings.seed += 1000;  // independent of the jittered runs being measured
-  const std::string file = out + "/reference_" + scene.name + "_" + std::to_string(settings.width) + "x" +
+  const std::string file = out + "/reference_" + world.scene.name + "_" + std::to_string(settings.width) + "x" +
                            std::to_string(settings.height) + "_jittered" + std::to_string(n) + "_depth" +
                            std::to_string(settings.trace.max_depth) + "_seed" + std::to_string(settings.seed) + ".pfm";
-  const gi::Image reference = gi::cached_reference(scene, settings, file);
+  const gi::Image reference = gi::cached_reference(world, settings, file);
   gi::write_png(reference, out + "/reference.png");
   return reference;
 }
@@ -59,6 +59,7 @@ std::string slug(std::string label) {
 int main(int argc, char** argv) {
   return gi::run_lesson("03_antialiasing", [&] {
     gi::CommonOptions common;
+    std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
     gi::RenderSettings settings;
     settings.width = 320;
     settings.height = 240;
@@ -69,6 +70,7 @@ int main(int argc, char** argv) {
                                            "against a many-sample reference.");
     gi::add_common_options(options, common, "03_antialiasing");
     options.add("--width", settings.width, "image width in pixels", 16, 4096)
+        .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
         .add("--height", settings.height, "image height in pixels", 16, 4096)
         .add("--scene", scene_name, "scene to render", gi::scene_names())
         .add("--depth", settings.trace.max_depth, "recursion depth limit", 0, 30)
@@ -76,9 +78,9 @@ int main(int argc, char** argv) {
     if (!options.parse(argc, argv)) return 0;
     settings.threads = common.threads;
     settings.seed = common.seed;
-    const gi::Scene scene = gi::make_scene(scene_name);
+    const gi::World world = gi::make_world(gi::make_scene(scene_name), gi::acceleration_from_name(accel));
     const std::string out = common.out;
-    const gi::Image reference = reference_image(scene, settings, reference_n, out);
+    const gi::Image reference = reference_image(world, settings, reference_n, out);
 
     gi::Table table("Anti-aliasing, scene " + scene_name + ", against jittered " + std::to_string(reference_n) + "x" +
                         std::to_string(reference_n),
@@ -97,7 +99,7 @@ int main(int argc, char** argv) {
     gi::Progress progress("rendering", static_cast<long long>(list.size()));
     for (const Method& m : list) {
       settings.sampling = m.sampling;
-      const gi::RenderResult r = gi::render(scene, settings);
+      const gi::RenderResult r = gi::render(world, settings);
       progress.advance();
       const double spp = r.counts.of(gi::RayKind::Primary) / double(r.image.pixels.size());
       table.add_row({m.label, spp, r.counts.of(gi::RayKind::Primary), 1e3 * r.seconds, gi::rmse(r.image, reference),

@@ -22,22 +22,22 @@ namespace {
 
 // The part of the area light seen from the floor point (x, 0, 0), by 32 x 32
 // jittered shadow rays.
-double visible_fraction(const gi::Scene& scene, double x, gi::Rng& rng) {
+double visible_fraction(const gi::World& world, double x, gi::Rng& rng) {
   const gi::vec3 point(x, 0, 0), up(0, 1, 0);
-  const auto reaches = [&](const gi::vec3& y) { return gi::visible(scene, point, up, y, 1e-6); };
+  const auto reaches = [&](const gi::vec3& y) { return gi::visible(world, point, up, y, 1e-6); };
   const auto one = [](const gi::vec3&) { return gi::Color(1.0); };
   const auto samples = gi::light_samples({gi::LightSampling::Jittered, 32}, rng);
-  return gi::soft_shadow_estimate(scene.area_lights.front(), samples, reaches, one).x;
+  return gi::soft_shadow_estimate(world.scene.area_lights.front(), samples, reaches, one).x;
 }
 
 // Width of the penumbra of the box's edge on the floor along z = 0: where the visible
 // fraction rises from 10% to 90%, scaled by 1/0.8 to the whole ramp.
-double measured_penumbra(const gi::Scene& scene, gi::Rng& rng) {
-  if (scene.area_lights.empty()) return 0;
+double measured_penumbra(const gi::World& world, gi::Rng& rng) {
+  if (world.scene.area_lights.empty()) return 0;
   double x10 = 0, x90 = 0;
   const double step = 0.002;
   for (double x = 1.2; x < 3.2; x += step) {
-    const double f = visible_fraction(scene, x, rng);
+    const double f = visible_fraction(world, x, rng);
     if (f < 0.1) x10 = x + step;
     if (f < 0.9) x90 = x + step;
   }
@@ -49,6 +49,7 @@ double measured_penumbra(const gi::Scene& scene, gi::Rng& rng) {
 int main(int argc, char** argv) {
   return gi::run_lesson("04_soft_shadows", [&] {
     gi::CommonOptions common;
+    std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
     gi::RenderSettings settings;
     settings.width = 320;
     settings.height = 240;
@@ -59,6 +60,7 @@ int main(int argc, char** argv) {
                                            "rays, against a many-ray reference; penumbra against light size.");
     gi::add_common_options(options, common, "04_soft_shadows");
     options.add("--width", settings.width, "image width in pixels", 16, 4096)
+        .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
         .add("--height", settings.height, "image height in pixels", 16, 4096)
         .add("--light-size", light_size, "side of the square area light (scene units)", 0.05, 4.0)
         .add("--reference-n", reference_n, "reference: jittered n x n shadow rays per hit", 4, 64);
@@ -73,22 +75,22 @@ int main(int argc, char** argv) {
                        {{"light size s", 2}, {"predicted w", 3}, {"measured w", 3}, {"shadow rays/hit"}});
     std::vector<gi::Image> strip;
     for (double s : {0.0, 0.25, 0.5, 1.0, 2.0}) {
-      const gi::Scene scene = gi::soft_shadow_scene(s);
+      const gi::World lit = gi::make_world(gi::soft_shadow_scene(s), gi::acceleration_from_name(accel));
       const double predicted = s * gi::soft_shadow_box_height / (gi::soft_shadow_light_height - gi::soft_shadow_box_height);
       settings.trace.soft_shadows = {gi::LightSampling::Jittered, 8};
-      penumbra.add_row({s, predicted, measured_penumbra(scene, rng), s == 0 ? 1 : 64});
-      strip.push_back(gi::render(scene, settings).image);
+      penumbra.add_row({s, predicted, measured_penumbra(lit, rng), s == 0 ? 1 : 64});
+      strip.push_back(gi::render(lit, settings).image);
       gi::write_png(strip.back(), out + "/light_size_" + gi::format_number(s, 2, gi::Format::Fixed) + ".png");
     }
     gi::write_png(gi::side_by_side(strip), out + "/penumbra_by_light_size.png");
 
     // 2. Shadow rays per hit against noise and time, for one light size.
-    const gi::Scene scene = gi::soft_shadow_scene(light_size);
+    const gi::World world = gi::make_world(gi::soft_shadow_scene(light_size), gi::acceleration_from_name(accel));
     gi::RenderSettings reference_settings = settings;
     reference_settings.trace.soft_shadows = {gi::LightSampling::Jittered, reference_n};
     reference_settings.seed += 1000;  // independent of the runs being measured
     const gi::Image reference = gi::cached_reference(
-        scene, reference_settings,
+        world, reference_settings,
         out + "/reference_" + std::to_string(settings.width) + "x" + std::to_string(settings.height) + "_light" +
             gi::format_number(light_size, 3, gi::Format::Fixed) + "_jittered" + std::to_string(reference_n) +
             "_seed" + std::to_string(reference_settings.seed) + ".pfm");
@@ -111,7 +113,7 @@ int main(int argc, char** argv) {
     gi::Progress progress("rendering", static_cast<long long>(runs.size()));
     for (const gi::SoftShadowSettings& run : runs) {
       settings.trace.soft_shadows = run;
-      const gi::RenderResult r = gi::render(scene, settings);
+      const gi::RenderResult r = gi::render(world, settings);
       progress.advance();
       const std::string name = gi::light_sampling_name(run.sampling);
       const double error = gi::rmse(r.image, reference);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "gi/accel/ray_sets.hpp"
 #include "gi/accel/world.hpp"
 #include "gi/core/rng.hpp"
 #include "gi/core/timer.hpp"
@@ -82,11 +83,6 @@ RTCRay embree_ray(const gi::Ray& ray) {
   return r;
 }
 
-gi::vec3 random_direction(gi::Rng& rng) {  // uniform on the sphere
-  const double z = 2 * rng.uniform() - 1, phi = 2 * gi::pi * rng.uniform(), s = std::sqrt(1 - z * z);
-  return {s * std::cos(phi), s * std::sin(phi), z};
-}
-
 // Median milliseconds of `repeats` runs of `run`.
 double time_ms(int repeats, const std::function<void()>& run) {
   std::vector<double> ms;
@@ -132,15 +128,9 @@ int main(int argc, char** argv) {
 
     // The rays: one per pixel from the camera, and from random points in the room
     // ([-5, 5] x [0, 3.5] x [-5, 5], kept 0.1 off the walls) in uniform directions.
-    std::vector<gi::Ray> camera, random;
-    const gi::CameraFrame frame = gi::camera_frame(scene.camera, width, height);
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) camera.push_back(gi::primary_ray(frame, x + 0.5, y + 0.5));
     gi::Rng rng(seed);
-    for (int i = 0; i < random_rays; ++i) {
-      const gi::vec3 origin(-4.9 + 9.8 * rng.uniform(), 0.1 + 3.3 * rng.uniform(), -4.9 + 9.8 * rng.uniform());
-      random.push_back({origin, random_direction(rng)});
-    }
+    const std::vector<gi::Ray> camera = gi::camera_rays(scene, width, height);
+    const std::vector<gi::Ray> random = gi::random_rays(gi::quad_room_interior(), random_rays, rng);
 
     gi::Table queries("Queries, one thread, median of " + std::to_string(repeats) + " runs",
                       {{"rays"}, {"query"}, {"count"}, {"ours ms", 1}, {"ours Mrays/s", 2}, {"Embree ms", 1},

@@ -42,7 +42,8 @@ std::string bytes(const fs::path& file) {
 
 // Every lesson, and the ones that render an image of a scene (which take --width,
 // --height and, but for 04, --scene).
-const char* const lessons[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows", "07_hemicube"};
+const char* const lessons[] = {"01_rays",          "02_recursive", "03_antialiasing", "04_soft_shadows", "05_acceleration",
+                               "07_hemicube",      "09_jacobi_gauss_seidel", "10_southwell"};
 const char* const rendering[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows"};
 
 bool renders(const std::string& lesson) {
@@ -126,6 +127,26 @@ TEST(Lessons, HemicubeWritesItsPicturesAndTables) {
                            "speed.csv"})
     EXPECT_TRUE(fs::exists(out_dir("07") + "/" + file)) << file;
   EXPECT_EQ(run("07_hemicube", "--resolution 21").status, 2) << "odd resolutions are refused";
+}
+
+TEST(Lessons, AccelerationTablesAndChart) {
+  const LessonRun r = run("05_acceleration", "--width 20 --height 16 --max-spheres 100 --room-quads 300 --out " +
+                                                 out_dir("05"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("BVH, SAH"), std::string::npos);
+  EXPECT_EQ(r.output.find(" NO"), std::string::npos) << "an image differed between thread counts:\n" << r.output;
+  for (const char* file : {"spheres.csv", "time_vs_n.svg", "quad_room.csv", "threads.csv"})
+    EXPECT_TRUE(fs::exists(out_dir("05") + "/" + file)) << file;
+}
+
+TEST(Lessons, SolverLessonsPrintResidualTables) {
+  for (const char* lesson : {"09_jacobi_gauss_seidel", "10_southwell"}) {
+    const LessonRun r = run(lesson, std::string("--elements 40 --resolution 20 --out ") + out_dir(lesson));
+    ASSERT_EQ(r.status, 0) << lesson << r.output;
+    EXPECT_NE(r.output.find("Gauss-Seidel"), std::string::npos) << lesson;
+  }
+  EXPECT_TRUE(fs::exists(out_dir("09_jacobi_gauss_seidel") + "/residuals.csv"));
+  EXPECT_TRUE(fs::exists(out_dir("10_southwell") + "/error_vs_work.svg"));
 }
 
 TEST(Lessons, SameBytesForAnyThreadCount) {

@@ -122,7 +122,7 @@ TEST(PixelSamplers, NamesAndChecks) {
 }
 
 TEST(PixelSamplers, SupersampledRenderIsTheSameForAnyThreadCount) {
-  const gi::Scene scene = gi::make_scene("aliasing");
+  const gi::World world = gi::make_world(gi::make_scene("aliasing"));
   gi::RenderSettings settings;
   settings.width = 70;
   settings.height = 40;
@@ -130,9 +130,9 @@ TEST(PixelSamplers, SupersampledRenderIsTheSameForAnyThreadCount) {
   for (gi::Sampling sampling : {gi::Sampling{gi::Sampler::Jittered, 3}, gi::Sampling{gi::Sampler::Adaptive, 1, 0.05, 3}}) {
     settings.sampling = sampling;
     settings.threads = 1;
-    const gi::RenderResult one = gi::render(scene, settings);
+    const gi::RenderResult one = gi::render(world, settings);
     settings.threads = 3;
-    const gi::RenderResult three = gi::render(scene, settings);
+    const gi::RenderResult three = gi::render(world, settings);
     EXPECT_EQ(one.image.pixels, three.image.pixels);
     EXPECT_EQ(one.samples, three.samples);
   }

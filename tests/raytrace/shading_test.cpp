@@ -54,7 +54,8 @@ TEST(ShadowRay, OnlyObjectsBetweenPointAndLightCastShadows) {
   gi::Scene scene;
   const int m = scene.add(gi::Material{});
   scene.add(gi::Sphere{{0, 5, 0}, 1, m});
-  EXPECT_FALSE(gi::visible(scene, {0, 0, 0}, {0, 1, 0}, {0, 10, 0}, 1e-6));  // blocked
-  EXPECT_TRUE(gi::visible(scene, {0, 0, 0}, {0, 1, 0}, {0, 3, 0}, 1e-6));    // light before the sphere
-  EXPECT_TRUE(gi::visible(scene, {3, 0, 0}, {0, 1, 0}, {3, 10, 0}, 1e-6));   // passes beside it
+  const gi::World world = gi::make_world(scene);
+  EXPECT_FALSE(gi::visible(world, {0, 0, 0}, {0, 1, 0}, {0, 10, 0}, 1e-6));  // blocked
+  EXPECT_TRUE(gi::visible(world, {0, 0, 0}, {0, 1, 0}, {0, 3, 0}, 1e-6));    // light before the sphere
+  EXPECT_TRUE(gi::visible(world, {3, 0, 0}, {0, 1, 0}, {3, 10, 0}, 1e-6));   // passes beside it
 }

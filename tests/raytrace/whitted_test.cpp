@@ -38,13 +38,13 @@ gi::Scene glass_ball_in_white_sky() {
 }  // namespace
 
 TEST(Whitted, FacingMirrorsSumTheGeometricSeries) {
-  const gi::Scene scene = facing_mirrors(0.5, 1.0);
+  const gi::World world = gi::make_world(facing_mirrors(0.5, 1.0));
   for (int depth : {0, 1, 2, 5, 20}) {
     gi::TraceSettings settings;
     settings.max_depth = depth;
     gi::RayCounts counts;
     gi::Rng rng;
-    const Color c = gi::trace(scene, gi::Ray{{0, 0, 0}, {0, 0, 1}}, settings, counts, rng);
+    const Color c = gi::trace(world, gi::Ray{{0, 0, 0}, {0, 0, 1}}, settings, counts, rng);
     EXPECT_NEAR(c.x, (1 - std::pow(0.5, depth + 1)) / 0.5, 1e-12) << "depth " << depth;
     EXPECT_EQ(counts.of(gi::RayKind::Reflected), static_cast<std::uint64_t>(depth));
     if (depth > 0) {
@@ -54,38 +54,38 @@ TEST(Whitted, FacingMirrorsSumTheGeometricSeries) {
 }
 
 TEST(Whitted, ContributionThresholdStopsWhenRaysNoLongerMatter) {
-  const gi::Scene scene = facing_mirrors(0.5, 1.0);
+  const gi::World world = gi::make_world(facing_mirrors(0.5, 1.0));
   gi::TraceSettings settings;
   settings.max_depth = 60;
   settings.min_contribution = 0.01;  // 0.5^6 = 0.0156 >= 0.01 > 0.5^7
   gi::RayCounts counts;
   gi::Rng rng;
-  const Color c = gi::trace(scene, gi::Ray{{0, 0, 0}, {0, 0, 1}}, settings, counts, rng);
+  const Color c = gi::trace(world, gi::Ray{{0, 0, 0}, {0, 0, 1}}, settings, counts, rng);
   EXPECT_EQ(counts.of(gi::RayKind::Reflected), 6u);
   // The error is what the skipped rays would have added: 2 * 0.5^7.
   EXPECT_NEAR(c.x, 2.0 - 2.0 * std::pow(0.5, 7), 1e-12);
 }
 
 TEST(Whitted, ClearGlassBallConservesEnergy) {
-  const gi::Scene scene = glass_ball_in_white_sky();
+  const gi::World world = gi::make_world(glass_ball_in_white_sky());
   gi::TraceSettings settings;
   settings.max_depth = 40;
   for (double offset : {0.0, 0.3, 0.7, 0.95}) {
     gi::RayCounts counts;
     gi::Rng rng;
-    const Color c = gi::trace(scene, gi::Ray{{offset, 0, 5}, {0, 0, -1}}, settings, counts, rng);
+    const Color c = gi::trace(world, gi::Ray{{offset, 0, 5}, {0, 0, -1}}, settings, counts, rng);
     EXPECT_NEAR(c.x, 1.0, 1e-6) << "ray at offset " << offset;
     EXPECT_GT(counts.of(gi::RayKind::Transmitted), 0u);
   }
 }
 
 TEST(Whitted, ShallowDepthLosesTheLightTrappedInTheBall) {
-  const gi::Scene scene = glass_ball_in_white_sky();
+  const gi::World world = gi::make_world(glass_ball_in_white_sky());
   gi::TraceSettings settings;
   settings.max_depth = 1;  // enters the ball but cannot leave it
   gi::RayCounts counts;
   gi::Rng rng;
-  const Color c = gi::trace(scene, gi::Ray{{0, 0, 5}, {0, 0, -1}}, settings, counts, rng);
+  const Color c = gi::trace(world, gi::Ray{{0, 0, 5}, {0, 0, -1}}, settings, counts, rng);
   EXPECT_NEAR(c.x, 0.04, 1e-12);  // only the Fresnel reflection at normal incidence escapes
 }
 
@@ -99,11 +99,12 @@ TEST(Whitted, ShadowedPointGetsOnlyAmbient) {
   scene.add(gi::Sphere{{0, 2, 0}, 0.5, m});
   scene.add(gi::PointLight{{0, 10, 0}, Color(1)});
   scene.ambient_light = Color(1);
+  const gi::World world = gi::make_world(scene);
   gi::TraceSettings settings;
   gi::RayCounts counts;
   gi::Rng rng;
-  const Color under = gi::trace(scene, gi::Ray{{0, 1, 3}, gi::normalize(vec3(0, -1, -3))}, settings, counts, rng);
+  const Color under = gi::trace(world, gi::Ray{{0, 1, 3}, gi::normalize(vec3(0, -1, -3))}, settings, counts, rng);
   EXPECT_NEAR(under.x, 0.1, 1e-12);
-  const Color lit = gi::trace(scene, gi::Ray{{3, 1, 3}, gi::normalize(vec3(0, -1, -3))}, settings, counts, rng);
+  const Color lit = gi::trace(world, gi::Ray{{3, 1, 3}, gi::normalize(vec3(0, -1, -3))}, settings, counts, rng);
   EXPECT_GT(lit.x, 0.9);
 }

@@ -4,12 +4,12 @@
 
 namespace gi {
 
-Image cached_reference(const Scene& scene, const RenderSettings& settings, const std::filesystem::path& pfm_file) {
+Image cached_reference(const World& world, const RenderSettings& settings, const std::filesystem::path& pfm_file) {
   if (std::filesystem::exists(pfm_file)) {
     Image cached = read_pfm(pfm_file);
     if (cached.width == settings.width && cached.height == settings.height) return cached;
   }
-  const Image reference = render(scene, settings).image;
+  const Image reference = render(world, settings).image;
   write_pfm(reference, pfm_file);
   return reference;
 }

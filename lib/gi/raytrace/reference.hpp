@@ -11,6 +11,6 @@ namespace gi {
 // `pfm_file` exists it is read back, otherwise the scene is rendered and written
 // there (PFM keeps the linear floats exactly). Name the file after everything
 // that changes the picture.
-Image cached_reference(const Scene& scene, const RenderSettings& settings, const std::filesystem::path& pfm_file);
+Image cached_reference(const World& world, const RenderSettings& settings, const std::filesystem::path& pfm_file);
 
 }  // namespace gi

@@ -28,9 +28,9 @@ void check(const RenderSettings& s) {
   check(s.trace.soft_shadows);
 }
 
-RenderResult render(const Scene& scene, const RenderSettings& settings) {
+RenderResult render(const World& world, const RenderSettings& settings) {
   check(settings);
-  const CameraFrame frame = camera_frame(scene.camera, settings.width, settings.height);
+  const CameraFrame frame = camera_frame(world.scene.camera, settings.width, settings.height);
   const int tiles_x = (settings.width + tile_size - 1) / tile_size;
   const int tiles_y = (settings.height + tile_size - 1) / tile_size;
 
@@ -45,7 +45,7 @@ RenderResult render(const Scene& scene, const RenderSettings& settings) {
     const int y0 = (tile / tiles_x) * tile_size;
     const std::function<Color(double, double)> radiance = [&](double px, double py) {
       counts.count(RayKind::Primary, 0);
-      return trace(scene, primary_ray(frame, px, py), settings.trace, counts, rng);
+      return trace(world, primary_ray(frame, px, py), settings.trace, counts, rng);
     };
     for (int y = y0; y < std::min(y0 + tile_size, settings.height); ++y) {
       for (int x = x0; x < std::min(x0 + tile_size, settings.width); ++x) {

@@ -6,7 +6,7 @@
 #include "gi/raytrace/pixel_samplers.hpp"
 #include "gi/raytrace/ray_counts.hpp"
 #include "gi/raytrace/whitted.hpp"
-#include "gi/scene/scene.hpp"
+#include "gi/accel/world.hpp"
 
 namespace gi {
 
@@ -33,6 +33,6 @@ void check(const RenderSettings& settings);
 // is cut into 32x32 tiles that threads take in turn; every pixel depends only on
 // the scene, the settings and its own random stream, so the image is the same for
 // any thread count.
-RenderResult render(const Scene& scene, const RenderSettings& settings);
+RenderResult render(const World& world, const RenderSettings& settings);
 
 }  // namespace gi

@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "gi/core/not_implemented.hpp"
-#include "gi/scene/scene_intersect.hpp"
 
 namespace gi {
 
@@ -30,8 +29,8 @@ Ray shadow_ray(const vec3& point, const vec3& n, const vec3& light_position, dou
   // END EXERCISE 2.5
 }
 
-bool visible(const Scene& scene, const vec3& point, const vec3& n, const vec3& light_position, double epsilon) {
-  return !any_hit(scene, shadow_ray(point, n, light_position, epsilon));
+bool visible(const World& world, const vec3& point, const vec3& n, const vec3& light_position, double epsilon) {
+  return !any_hit(world, shadow_ray(point, n, light_position, epsilon));
 }
 
 }  // namespace gi

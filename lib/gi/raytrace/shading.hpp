@@ -2,7 +2,7 @@
 #include "gi/core/ray.hpp"
 #include "gi/scene/light.hpp"
 #include "gi/scene/material.hpp"
-#include "gi/scene/scene.hpp"
+#include "gi/accel/world.hpp"
 
 namespace gi {
 
@@ -21,6 +21,6 @@ Color phong(const Material& material, const Color& kd, const vec3& n, const vec3
 Ray shadow_ray(const vec3& point, const vec3& n, const vec3& light_position, double epsilon);
 
 // Is the point lit by this light, i.e. does its shadow ray reach the light?
-bool visible(const Scene& scene, const vec3& point, const vec3& n, const vec3& light_position, double epsilon);
+bool visible(const World& world, const vec3& point, const vec3& n, const vec3& light_position, double epsilon);
 
 }  // namespace gi

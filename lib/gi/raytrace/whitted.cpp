@@ -2,31 +2,30 @@
 
 #include "gi/raytrace/optics.hpp"
 #include "gi/raytrace/shading.hpp"
-#include "gi/scene/scene_intersect.hpp"
 
 namespace gi {
 
 namespace {
 
 // Local illumination: ambient plus the Phong term of every light the shadow rays reach.
-Color shade_locally(const Scene& scene, const Hit& hit, const vec3& n, const vec3& to_eye,
+Color shade_locally(const World& world, const Hit& hit, const vec3& n, const vec3& to_eye,
                     const TraceSettings& settings, RayCounts& counts, Rng& rng, int depth) {
-  const Material& material = scene.materials[hit.material];
+  const Material& material = world.scene.materials[hit.material];
   const Color kd = diffuse_at(material, hit.point);
-  Color colour = material.emission + material.ambient * kd * scene.ambient_light;
-  for (const PointLight& light : scene.lights) {
+  Color colour = material.emission + material.ambient * kd * world.scene.ambient_light;
+  for (const PointLight& light : world.scene.lights) {
     const Ray shadow = shadow_ray(hit.point, n, light.position, settings.epsilon);
     const vec3& l = shadow.direction;
     if (dot(n, l) <= 0) continue;  // light behind the surface: no shadow ray needed
     counts.count(RayKind::Shadow, depth);
-    if (!any_hit(scene, shadow)) colour += phong(material, kd, n, l, to_eye, light.intensity);
+    if (!any_hit(world, shadow, &counts.traversal)) colour += phong(material, kd, n, l, to_eye, light.intensity);
   }
-  for (const QuadLight& light : scene.area_lights) {
+  for (const QuadLight& light : world.scene.area_lights) {
     const auto reaches = [&](const vec3& y) {  // S(x, y): does the shadow ray get to y?
       const Ray shadow = shadow_ray(hit.point, n, y, settings.epsilon);
       if (dot(n, shadow.direction) <= 0) return false;  // y is behind the surface
       counts.count(RayKind::Shadow, depth);
-      return !any_hit(scene, shadow);
+      return !any_hit(world, shadow, &counts.traversal);
     };
     const auto point_light_at = [&](const vec3& y) {
       return phong(material, kd, n, normalize(y - hit.point), to_eye, light.intensity);
@@ -38,15 +37,15 @@ Color shade_locally(const Scene& scene, const Hit& hit, const vec3& n, const vec
 
 }  // namespace
 
-Color trace(const Scene& scene, const Ray& ray, const TraceSettings& settings, RayCounts& counts, Rng& rng,
+Color trace(const World& world, const Ray& ray, const TraceSettings& settings, RayCounts& counts, Rng& rng,
             int depth, const Color& contribution) {
-  const std::optional<Hit> hit = closest_hit(scene, ray);
-  if (!hit) return scene.background;
+  const std::optional<Hit> hit = closest_hit(world, ray, &counts.traversal);
+  if (!hit) return world.scene.background;
 
-  const Material& material = scene.materials[hit->material];
+  const Material& material = world.scene.materials[hit->material];
   const bool entering = dot(ray.direction, hit->normal) < 0;
   const vec3 n = entering ? hit->normal : -hit->normal;  // the normal on the ray's side
-  Color colour = shade_locally(scene, *hit, n, -ray.direction, settings, counts, rng, depth);
+  Color colour = shade_locally(world, *hit, n, -ray.direction, settings, counts, rng, depth);
   if (depth >= settings.max_depth) return colour;
 
   // How much reflected and transmitted light reaches this point's colour.
@@ -71,12 +70,12 @@ Color trace(const Scene& scene, const Ray& ray, const TraceSettings& settings, R
   if (worth_tracing(k_r)) {
     counts.count(RayKind::Reflected, depth + 1);
     const Ray reflected{hit->point + settings.epsilon * n, reflect(ray.direction, n)};
-    colour += k_r * trace(scene, reflected, settings, counts, rng, depth + 1, contribution * k_r);
+    colour += k_r * trace(world, reflected, settings, counts, rng, depth + 1, contribution * k_r);
   }
   if (transmitted && worth_tracing(k_t)) {
     counts.count(RayKind::Transmitted, depth + 1);
     const Ray refracted{hit->point - settings.epsilon * n, normalize(*transmitted)};
-    colour += k_t * trace(scene, refracted, settings, counts, rng, depth + 1, contribution * k_t);
+    colour += k_t * trace(world, refracted, settings, counts, rng, depth + 1, contribution * k_t);
   }
   return colour;
 }

@@ -3,7 +3,7 @@
 #include "gi/core/rng.hpp"
 #include "gi/raytrace/ray_counts.hpp"
 #include "gi/raytrace/soft_shadows.hpp"
-#include "gi/scene/scene.hpp"
+#include "gi/accel/world.hpp"
 
 namespace gi {
 
@@ -22,7 +22,7 @@ struct TraceSettings {
 // `depth` is the number of reflections/refractions that led to this ray and
 // `contribution` how much of it reaches the pixel. Counts every ray it casts; `rng`
 // places the shadow rays on area lights.
-Color trace(const Scene& scene, const Ray& ray, const TraceSettings& settings, RayCounts& counts, Rng& rng,
+Color trace(const World& world, const Ray& ray, const TraceSettings& settings, RayCounts& counts, Rng& rng,
             int depth = 0, const Color& contribution = Color(1.0));
 
 }  // namespace gi

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gi/core/rng.hpp"
@@ -19,27 +20,15 @@ Material matte(const std::string& name, Color colour) {
   return m;
 }
 
-// The six faces of the box [lo, hi], as whole quads. For the face at the high end
-// of axis a the edges run along the next two axes in cyclic order (x y z x ...), so
-// edge_u x edge_v points along +a: outwards. The low face lists them the other way
-// round. `inwards` flips every face (the inside of a room); `bottom` = false leaves
-// out the face at low y, where a box stands on something: a hidden face that would
-// otherwise lie in the same plane as the floor and tie with it for the same hits.
+// The faces of the box [lo, hi] (box_quads), turned to face `inwards` for the inside
+// of a room. `bottom` = false leaves out the face at low y, where a box stands on
+// something: a hidden face in the floor's plane that would tie with it for hits.
 std::vector<Quad> box_faces(const vec3& lo, const vec3& hi, int material, bool inwards, bool bottom) {
   std::vector<Quad> faces;
-  const vec3 size = hi - lo;
-  for (int a = 0; a < 3; ++a) {
-    const int b = (a + 1) % 3, c = (a + 2) % 3;
-    vec3 edge_b(0.0), edge_c(0.0);
-    edge_b[b] = size[b];
-    edge_c[c] = size[c];
-    for (const bool high : {false, true}) {
-      if (a == 1 && !high && !bottom) continue;
-      vec3 corner = lo;
-      if (high) corner[a] = hi[a];
-      const bool swap = high == inwards;  // low outward faces and high inward faces list (c, b)
-      faces.push_back(swap ? Quad{corner, edge_c, edge_b, material} : Quad{corner, edge_b, edge_c, material});
-    }
+  for (Quad q : box_quads(lo, hi, material)) {
+    if (!bottom && normal(q).y < -0.5) continue;
+    if (inwards) std::swap(q.edge_u, q.edge_v);  // the same parallelogram, facing the other way
+    faces.push_back(q);
   }
   return faces;
 }
@@ -75,6 +64,8 @@ Scene random_spheres(int count, std::uint64_t seed) {
   s.camera = Camera{{6, 4, 17}, {0, 0, 0}, {0, 1, 0}, 40};
   return s;
 }
+
+Aabb quad_room_interior() { return Aabb{{-4.9, 0.1, -4.9}, {4.9, 3.4, 4.9}}; }
 
 Scene quad_room(int target_quads) {
   if (target_quads < 1)

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 
+#include "gi/geometry/aabb.hpp"
 #include "gi/scene/scene.hpp"
 
 namespace gi {
@@ -22,5 +23,8 @@ Scene random_spheres(int count, std::uint64_t seed = 1);
 // per face) the target cannot be met. Throws std::invalid_argument for
 // target_quads < 1.
 Scene quad_room(int target_quads);
+
+// The room's inside, kept 0.1 off its walls: where random rays of a benchmark start.
+Aabb quad_room_interior();
 
 }  // namespace gi

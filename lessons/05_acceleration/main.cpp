@@ -1,0 +1,197 @@
+// Lesson 05 -- bounding volumes and parallel computation. "Most work is spent testing
+// intersections": brute force against a box per object against a bounding volume
+// hierarchy, on 10 to 100 000 spheres; BVH throughput on a room of 100 000 quads; and
+// the render of every lesson so far on 1, 2, ... threads, with the same bytes.
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "gi/accel/ray_sets.hpp"
+#include "gi/accel/world.hpp"
+#include "gi/core/timer.hpp"
+#include "gi/raytrace/render.hpp"
+#include "gi/report/chart.hpp"
+#include "gi/report/lesson.hpp"
+#include "gi/report/options.hpp"
+#include "gi/report/progress.hpp"
+#include "gi/report/table.hpp"
+#include "gi/scene/benchmark_scenes.hpp"
+#include "gi/scene/builtin_scenes.hpp"
+#include "gi/scene/soft_shadow_scene.hpp"
+
+namespace {
+
+struct Method {
+  std::string label;
+  gi::Acceleration acceleration;
+  gi::Split split;
+};
+const Method methods[] = {{"brute force", gi::Acceleration::BruteForce, gi::Split::Sah},
+                          {"box per object", gi::Acceleration::BoundingBoxes, gi::Split::Sah},
+                          {"BVH, median split", gi::Acceleration::Bvh, gi::Split::Median},
+                          {"BVH, SAH", gi::Acceleration::Bvh, gi::Split::Sah}};
+
+struct Cast {
+  double seconds;                 // median of the repeats
+  gi::TraversalCounts counts;     // of one pass
+  std::uint64_t hits = 0;
+};
+
+// Casts every ray `repeats` times on one thread, nearest hits or any hits.
+Cast cast(const gi::World& world, const std::vector<gi::Ray>& rays, bool nearest, int repeats) {
+  Cast result{0, {}, 0};
+  std::vector<double> times;
+  for (int r = 0; r < repeats; ++r) {
+    gi::TraversalCounts counts;
+    std::uint64_t hits = 0;
+    const gi::Timer timer;
+    for (const gi::Ray& ray : rays) hits += nearest ? closest_hit(world, ray, &counts).has_value() : any_hit(world, ray, &counts);
+    times.push_back(timer.seconds());
+    result.counts = counts;
+    result.hits = hits;
+  }
+  result.seconds = gi::median(times);
+  return result;
+}
+
+// 1. Brute force, a box per object and the BVH on ever more spheres.
+void spheres_table(int max_spheres, int width, int height, const std::string& out) {
+  gi::Table table("Nearest hit of " + std::to_string(width) + "x" + std::to_string(height) +
+                      " eye rays among N random spheres, 1 thread",
+                  {{"N"}, {"method"}, {"build ms", 2, gi::Format::Fixed}, {"rays"}, {"nodes/ray", 1}, {"box tests/ray", 1},
+                   {"sphere tests/ray", 1}, {"us/ray", 3}, {"speedup", 1}});
+  std::vector<gi::Series> curves;
+  for (const Method& m : methods) curves.push_back({m.label, {}, {}});
+  for (int n = 10; n <= max_spheres; n *= 10) {
+    gi::Scene scene = gi::random_spheres(n, 1);
+    double brute_us = 0;
+    for (std::size_t i = 0; i < std::size(methods); ++i) {
+      const Method& m = methods[i];
+      const gi::Timer build;
+      const gi::World world = gi::make_world(scene, m.acceleration, {4, 12, m.split});
+      const double build_ms = build.milliseconds();
+      // Testing every sphere costs N per ray: cast a strided subset so that each
+      // row stays under ~2e7 primitive tests.
+      const bool linear = m.acceleration != gi::Acceleration::Bvh;
+      const int stride = linear ? std::max(1, static_cast<int>(double(width) * height * n / 2e7)) : 1;
+      const std::vector<gi::Ray> rays = gi::camera_rays(world.scene, width, height, stride);
+      const Cast c = cast(world, rays, true, 3);
+      const double per = 1.0 / rays.size(), us = 1e6 * c.seconds * per;
+      if (i == 0) brute_us = us;
+      table.add_row({n, m.label, build_ms, static_cast<long long>(rays.size()), c.counts.nodes_visited * per,
+                     c.counts.box_tests * per, c.counts.primitive_tests * per, us, brute_us / us});
+      curves[i].x.push_back(n);
+      curves[i].y.push_back(us);
+    }
+  }
+  table.print();
+  table.write_csv(out + "/spheres.csv");
+  gi::write_svg({"Time per ray against the number of spheres", "spheres N", "microseconds per eye ray", true, true,
+                 curves},
+                out + "/time_vs_n.svg");
+}
+
+// 2. The BVH on a room of quads, coherent and incoherent rays, one thread.
+void quad_room_table(int quads, const std::string& out) {
+  const gi::Timer build;
+  const gi::World world = gi::make_world(gi::quad_room(quads));
+  const double build_ms = build.milliseconds();
+  const gi::BvhStats stats = gi::bvh_stats(world.bvh);
+  gi::Table table("BVH (SAH) on a room of " + std::to_string(world.scene.quads.size()) + " quads, 1 thread: build " +
+                      gi::format_number(build_ms, 0, gi::Format::Fixed) + " ms, " + std::to_string(stats.nodes) +
+                      " nodes, depth " + std::to_string(stats.depth),
+                  {{"rays"}, {"query"}, {"count"}, {"ms", 1}, {"Mrays/s", 2}, {"nodes/ray", 1}, {"quad tests/ray", 1}});
+  // The rays of the Embree comparison (05_embree_bench), so the figures compare:
+  // any-hit rays are the random ones cut to 4 m, like shadow rays.
+  gi::Rng rng(1);
+  const std::vector<gi::Ray> coherent = gi::camera_rays(world.scene, 512, 512);
+  const std::vector<gi::Ray> incoherent = gi::random_rays(gi::quad_room_interior(), 512 * 512, rng);
+  std::vector<gi::Ray> shadow = incoherent;
+  for (gi::Ray& ray : shadow) ray.t_max = 4.0;
+  const struct {
+    const char* name;
+    const std::vector<gi::Ray>& rays;
+    bool nearest;
+  } runs[] = {{"camera", coherent, true}, {"random", incoherent, true}, {"random, 4 m", shadow, false}};
+  for (const auto& run : runs) {
+    const Cast c = cast(world, run.rays, run.nearest, 5);
+    const double per = 1.0 / run.rays.size();
+    table.add_row({run.name, run.nearest ? "nearest hit" : "any hit", static_cast<long long>(run.rays.size()),
+                   1e3 * c.seconds, 1e-6 * run.rays.size() / c.seconds, c.counts.nodes_visited * per,
+                   c.counts.primitive_tests * per});
+  }
+  table.print();
+  table.write_csv(out + "/quad_room.csv");
+}
+
+// 3. Every rendering lesson's picture on 1, 2, ... threads.
+void threads_table(const std::string& out) {
+  struct Job {
+    std::string name;
+    gi::World world;
+    gi::RenderSettings settings;
+  };
+  std::vector<Job> jobs;
+  gi::RenderSettings s;
+  s.width = 640, s.height = 480, s.trace.max_depth = 8;
+  jobs.push_back({"02 whitted 640x480 depth 8", gi::make_world(gi::make_scene("whitted")), s});
+  s.width = 320, s.height = 240, s.trace.max_depth = 3, s.sampling = {gi::Sampler::Jittered, 4};
+  jobs.push_back({"03 aliasing, jittered 4x4", gi::make_world(gi::make_scene("aliasing")), s});
+  s.sampling = {}, s.trace.max_depth = 1, s.trace.soft_shadows = {gi::LightSampling::Jittered, 4};
+  jobs.push_back({"04 soft shadows, 16 rays", gi::make_world(gi::soft_shadow_scene(1.0)), s});
+  s.trace.soft_shadows = {};
+  jobs.push_back({"05 10 000 spheres", gi::make_world(gi::random_spheres(10000, 1)), s});
+
+  const int cores = std::max(2u, std::thread::hardware_concurrency());
+  gi::Table table("Threads: render time (median of 5), speedup over 1 thread, efficiency (" + std::to_string(cores) +
+                      " cores)",
+                  {{"picture"}, {"threads"}, {"ms", 1}, {"speedup", 2}, {"efficiency %", 0}, {"same image"}});
+  for (Job& job : jobs) {
+    // Five rounds of 1, 2, ... threads, interleaved, so that a busy moment of the
+    // (shared) machine does not fall on one thread count only; medians reported.
+    std::vector<std::vector<double>> times(cores + 1);
+    std::vector<gi::Image> images(cores + 1);
+    for (int round = 0; round < 5; ++round)
+      for (int threads = 1; threads <= cores; ++threads) {
+        job.settings.threads = threads;
+        gi::RenderResult result = gi::render(job.world, job.settings);
+        times[threads].push_back(result.seconds);
+        images[threads] = std::move(result.image);
+      }
+    const double t1 = gi::median(times[1]);
+    for (int threads = 1; threads <= cores; ++threads) {
+      const double t = gi::median(times[threads]);
+      table.add_row({job.name, threads, 1e3 * t, t1 / t, 100 * t1 / t / threads,
+                     images[threads].pixels == images[1].pixels ? "yes" : "NO"});
+    }
+  }
+  table.print();
+  table.write_csv(out + "/threads.csv");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return gi::run_lesson("05_acceleration", [&] {
+    gi::CommonOptions common;
+    int width = 160, height = 120, max_spheres = 100000, room_quads = 100000;
+    gi::Options options("05_acceleration", "Bounding volumes and threads: brute force, a box per object and a BVH "
+                                           "on 10 to 100 000 spheres; a room of quads; speedup per thread.");
+    gi::add_common_options(options, common, "05_acceleration");
+    options.add("--width", width, "eye-ray image width for the spheres table", 16, 4096)
+        .add("--height", height, "eye-ray image height for the spheres table", 16, 4096)
+        .add("--max-spheres", max_spheres, "largest sphere count (powers of 10 from 10)", 10, 1000000)
+        .add("--room-quads", room_quads, "quads in the room (about)", 100, 2000000);
+    if (!options.parse(argc, argv)) return 0;
+    spheres_table(max_spheres, width, height, common.out);
+    std::cout << '\n';
+    quad_room_table(room_quads, common.out);
+    std::cout << '\n';
+    threads_table(common.out);
+    std::cout << "\ntables and chart: " << common.out << "/\n";
+    return 0;
+  });
+}
