@@ -12,9 +12,11 @@ Color phong(const Material& material, const Color& kd, const vec3& n, const vec3
   const double n_dot_l = dot(n, l);
   if (n_dot_l <= 0) return Color(0.0);  // the light is behind the surface
   Color colour = kd * n_dot_l;
-  const vec3 r = 2.0 * n_dot_l * n - l;  // L mirrored about N
-  const double r_dot_v = dot(r, v);
-  if (r_dot_v > 0) colour += material.specular * std::pow(r_dot_v, material.shininess);
+  if (max_component(material.specular) > 0) {  // a matte surface has no highlight: spare the pow
+    const vec3 r = 2.0 * n_dot_l * n - l;       // L mirrored about N
+    const double r_dot_v = dot(r, v);
+    if (r_dot_v > 0) colour += material.specular * std::pow(r_dot_v, material.shininess);
+  }
   return light_intensity * colour;
   // END EXERCISE 2.4
 }

@@ -8,8 +8,9 @@ namespace gi {
 namespace {
 
 // Local illumination: ambient plus the Phong term of every light the shadow rays reach.
-Color shade_locally(const World& world, const Hit& hit, const vec3& n, const vec3& to_eye,
-                    const TraceSettings& settings, RayCounts& counts, Rng& rng, int depth) {
+// Kept out of the recursive trace() (noinline) so that trace's stack frame stays small.
+[[gnu::noinline]] Color shade_locally(const World& world, const Hit& hit, const vec3& n, const vec3& to_eye,
+                                      const TraceSettings& settings, RayCounts& counts, Rng& rng, int depth) {
   const Material& material = world.scene.materials[hit.material];
   const Color kd = diffuse_at(material, hit.point);
   Color colour = material.emission + material.ambient * kd * world.scene.ambient_light;
