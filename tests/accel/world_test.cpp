@@ -97,6 +97,30 @@ TEST(World, AllMethodsAgreeWithPlanesAndMixedPrimitives) {
   expect_agreement(scene, random_rays({-6, 0.1, -6}, {6, 4, 8}, 3000, 3));
 }
 
+TEST(World, TrianglesAgreeAndHitsNameTheirPrimitive) {
+  gi::Scene scene;
+  const int m = scene.add(gi::Material{});
+  gi::Rng rng(9);
+  for (int i = 0; i < 500; ++i) {
+    const vec3 a = vec3(rng.uniform(), rng.uniform(), rng.uniform()) * 10.0 - 5.0;
+    scene.add(gi::Triangle{a, a + random_direction(rng), a + random_direction(rng), m});
+  }
+  const std::vector<Ray> rays = random_rays(vec3(-6), vec3(6), 3000, 4);
+  expect_agreement(scene, rays);
+  const gi::World brute = gi::make_world(scene, Acceleration::BruteForce), bvh = gi::make_world(scene);
+  int hits = 0;
+  for (const Ray& ray : rays) {
+    const auto a = gi::closest_hit(brute, ray), b = gi::closest_hit(bvh, ray);
+    if (!a) continue;
+    ++hits;
+    ASSERT_TRUE(b);
+    EXPECT_EQ(a->object, b->object);
+    ASSERT_GE(a->object, 0);
+    EXPECT_TRUE(gi::intersect(ray, scene.triangles[static_cast<std::size_t>(a->object)])) << "object names the hit";
+  }
+  EXPECT_GT(hits, 100);
+}
+
 TEST(World, CountsShowTheTreeTestsFarFewerThanAll) {
   const int n = 10000;
   const std::vector<Ray> rays = random_rays(vec3(-5), vec3(5), 1000, 4);

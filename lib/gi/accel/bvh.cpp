@@ -172,16 +172,18 @@ Bvh build_bvh(const Scene& scene, const BvhSettings& settings) {
     throw std::invalid_argument("BVH: max_leaf_size must be in 1..255, got " + std::to_string(settings.max_leaf_size));
   if (settings.bins < 2 || settings.bins > 256)
     throw std::invalid_argument("BVH: bins must be in 2..256, got " + std::to_string(settings.bins));
-  if (scene.spheres.size() + scene.quads.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+  if (scene.spheres.size() + scene.quads.size() + scene.triangles.size() >
+      static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
     throw std::invalid_argument("BVH: more primitives than 32-bit indices can count");
 
   Builder builder{settings, {}, {}};
-  builder.items.reserve(scene.spheres.size() + scene.quads.size());
+  builder.items.reserve(scene.spheres.size() + scene.quads.size() + scene.triangles.size());
   const auto add = [&](const Aabb& box, PrimitiveKind kind, std::size_t index) {
     builder.items.push_back({box, centroid(box), {kind, static_cast<std::int32_t>(index)}});
   };
   for (std::size_t i = 0; i < scene.spheres.size(); ++i) add(bounds(scene.spheres[i]), PrimitiveKind::Sphere, i);
   for (std::size_t i = 0; i < scene.quads.size(); ++i) add(bounds(scene.quads[i]), PrimitiveKind::Quad, i);
+  for (std::size_t i = 0; i < scene.triangles.size(); ++i) add(bounds(scene.triangles[i]), PrimitiveKind::Triangle, i);
   if (builder.items.empty()) return {};
 
   builder.bvh.refs.reserve(builder.items.size());

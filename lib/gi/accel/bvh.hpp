@@ -29,7 +29,7 @@ struct BvhSettings {
 
 // A primitive in the tree: which of the scene's vectors, and where in it. Indices
 // rather than pointers, so a World can be copied or moved with its scene.
-enum class PrimitiveKind : std::int32_t { Sphere, Quad };
+enum class PrimitiveKind : std::int32_t { Sphere, Quad, Triangle };
 struct PrimitiveRef {
   PrimitiveKind kind;
   std::int32_t index;

@@ -6,10 +6,17 @@ namespace gi {
 
 namespace {
 
-// The ray against the primitive a tree reference names.
+// The ray against the primitive a tree reference names; the hit says which one.
 std::optional<Hit> intersect(const Ray& ray, const Scene& scene, PrimitiveRef ref) {
   const auto i = static_cast<std::size_t>(ref.index);
-  return ref.kind == PrimitiveKind::Quad ? intersect(ray, scene.quads[i]) : intersect(ray, scene.spheres[i]);
+  std::optional<Hit> hit;
+  switch (ref.kind) {
+    case PrimitiveKind::Sphere: hit = intersect(ray, scene.spheres[i]); break;
+    case PrimitiveKind::Quad: hit = intersect(ray, scene.quads[i]); break;
+    case PrimitiveKind::Triangle: hit = intersect(ray, scene.triangles[i]); break;
+  }
+  if (hit) hit->object = ref.index;
+  return hit;
 }
 
 }  // namespace

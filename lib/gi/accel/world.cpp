@@ -14,11 +14,12 @@ namespace {
 template <class Primitive>
 [[gnu::flatten]] void closest_in(const std::vector<Primitive>& primitives, Ray& ray, std::optional<Hit>& nearest,
                 TraversalCounts& counts) {
-  for (const Primitive& primitive : primitives) {
+  for (std::size_t i = 0; i < primitives.size(); ++i) {
     ++counts.primitive_tests;
-    if (auto hit = intersect(ray, primitive)) {
+    if (auto hit = intersect(ray, primitives[i])) {
       ray.t_max = hit->t;
       nearest = hit;
+      nearest->object = static_cast<int>(i);
     }
   }
 }
@@ -45,6 +46,7 @@ template <class Primitive>
     if (auto hit = intersect(ray, primitives[i])) {
       ray.t_max = hit->t;
       nearest = hit;
+      nearest->object = static_cast<int>(i);
     }
   }
 }
@@ -86,9 +88,10 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
   World world{std::move(scene), acceleration, {}, {}};
   if (acceleration == Acceleration::Bvh) world.bvh = build_bvh(world.scene, settings);
   if (acceleration == Acceleration::BoundingBoxes) {
-    world.boxes.reserve(world.scene.spheres.size() + world.scene.quads.size());
+    world.boxes.reserve(world.scene.spheres.size() + world.scene.quads.size() + world.scene.triangles.size());
     for (const Sphere& sphere : world.scene.spheres) world.boxes.push_back(bounds(sphere));
     for (const Quad& quad : world.scene.quads) world.boxes.push_back(bounds(quad));
+    for (const Triangle& triangle : world.scene.triangles) world.boxes.push_back(bounds(triangle));
   }
   return world;
 }
@@ -105,11 +108,14 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
     case Acceleration::BruteForce:
       closest_in(scene.spheres, ray, nearest, local);
       closest_in(scene.quads, ray, nearest, local);
+      closest_in(scene.triangles, ray, nearest, local);
       break;
     case Acceleration::BoundingBoxes: {
       const vec3 inv_dir = 1.0 / ray.direction;
       closest_in_boxes(scene.spheres, world.boxes.data(), ray, inv_dir, nearest, local);
       closest_in_boxes(scene.quads, world.boxes.data() + scene.spheres.size(), ray, inv_dir, nearest, local);
+      closest_in_boxes(scene.triangles, world.boxes.data() + scene.spheres.size() + scene.quads.size(), ray, inv_dir,
+                       nearest, local);
       break;
     }
     case Acceleration::Bvh:
@@ -127,12 +133,14 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
   bool hit = false;
   switch (world.acceleration) {
     case Acceleration::BruteForce:
-      hit = any_in(scene.spheres, ray, local) || any_in(scene.quads, ray, local);
+      hit = any_in(scene.spheres, ray, local) || any_in(scene.quads, ray, local) || any_in(scene.triangles, ray, local);
       break;
     case Acceleration::BoundingBoxes: {
       const vec3 inv_dir = 1.0 / ray.direction;
       hit = any_in_boxes(scene.spheres, world.boxes.data(), ray, inv_dir, local) ||
-            any_in_boxes(scene.quads, world.boxes.data() + scene.spheres.size(), ray, inv_dir, local);
+            any_in_boxes(scene.quads, world.boxes.data() + scene.spheres.size(), ray, inv_dir, local) ||
+            any_in_boxes(scene.triangles, world.boxes.data() + scene.spheres.size() + scene.quads.size(), ray,
+                         inv_dir, local);
       break;
     }
     case Acceleration::Bvh:

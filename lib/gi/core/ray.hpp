@@ -17,12 +17,15 @@ struct Ray {
 };
 
 // What a ray hit: the distance along the ray, the point, the surface's outward
-// unit normal there, and the index of the surface's material in the Scene.
+// unit normal there, the index of the surface's material in the Scene, and which
+// primitive it was: its index in the Scene's vector of its kind (set by the ray
+// queries of gi/accel/world.hpp; radiosity uses it to find the element hit).
 struct Hit {
   double t;
   vec3 point;
   vec3 normal;
   int material;
+  int object = -1;
 };
 
 }  // namespace gi

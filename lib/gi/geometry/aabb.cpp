@@ -34,6 +34,14 @@ double surface_area(const Aabb& box) {
 
 Aabb bounds(const Sphere& sphere) { return {sphere.center - sphere.radius, sphere.center + sphere.radius}; }
 
+Aabb bounds(const Triangle& triangle) {
+  Aabb box;
+  grow(box, triangle.a);
+  grow(box, triangle.b);
+  grow(box, triangle.c);
+  return box;
+}
+
 Aabb bounds(const Quad& quad) {
   Aabb box;
   for (const vec3& p : {quad.corner, quad.corner + quad.edge_u, quad.corner + quad.edge_v,

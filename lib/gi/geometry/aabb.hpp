@@ -5,6 +5,7 @@
 #include "gi/core/ray.hpp"
 #include "gi/geometry/quad.hpp"
 #include "gi/geometry/sphere.hpp"
+#include "gi/geometry/triangle.hpp"
 
 namespace gi {
 
@@ -27,6 +28,7 @@ double surface_area(const Aabb& box);  // 0 for an empty box
 // the quad lies in an axis-aligned plane, as walls and floors do.
 Aabb bounds(const Sphere& sphere);
 Aabb bounds(const Quad& quad);
+Aabb bounds(const Triangle& triangle);
 
 // The slab test (Kay and Kajiya 1986): the box is the intersection of three slabs,
 // lo.x <= x <= hi.x and so on; the ray is inside each slab for an interval of t, and

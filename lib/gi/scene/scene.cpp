@@ -48,6 +48,12 @@ void Scene::add(const Quad& quad) {
   quads.push_back(quad);
 }
 
+void Scene::add(const Triangle& triangle) {
+  check(triangle);
+  check_material_index(*this, triangle.material);
+  triangles.push_back(triangle);
+}
+
 void Scene::add(const PointLight& light) {
   if (!is_finite(light.position) || !is_finite(light.intensity))
     throw std::invalid_argument("point light: position and intensity must be finite");
@@ -65,6 +71,7 @@ void check(const Scene& scene) {
   for (const Sphere& s : scene.spheres) check(s), check_material_index(scene, s.material);
   for (const Plane& p : scene.planes) check(p), check_material_index(scene, p.material);
   for (const Quad& q : scene.quads) check(q), check_material_index(scene, q.material);
+  for (const Triangle& t : scene.triangles) check(t), check_material_index(scene, t.material);
   for (const QuadLight& l : scene.area_lights) check(l.shape);
   (void)camera_frame(scene.camera, 1, 1);  // throws for a degenerate camera
 }

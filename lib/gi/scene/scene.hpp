@@ -5,6 +5,7 @@
 #include "gi/geometry/plane.hpp"
 #include "gi/geometry/quad.hpp"
 #include "gi/geometry/sphere.hpp"
+#include "gi/geometry/triangle.hpp"
 #include "gi/scene/camera.hpp"
 #include "gi/scene/light.hpp"
 #include "gi/scene/material.hpp"
@@ -19,6 +20,7 @@ struct Scene {
   std::vector<Sphere> spheres;
   std::vector<Plane> planes;
   std::vector<Quad> quads;
+  std::vector<Triangle> triangles;  // meshes: the radiosity lessons cast rays into their elements
   std::vector<PointLight> lights;
   std::vector<QuadLight> area_lights;  // lesson 04; add an emitting quad too if the camera should see it
   Color background{0.0};     // radiance of rays that hit nothing
@@ -31,10 +33,11 @@ struct Scene {
   void add(const Sphere& sphere);
   void add(const Plane& plane);
   void add(const Quad& quad);
+  void add(const Triangle& triangle);
   void add(const PointLight& light);
   void add(const QuadLight& light);
 
-  std::size_t primitive_count() const { return spheres.size() + planes.size() + quads.size(); }
+  std::size_t primitive_count() const { return spheres.size() + planes.size() + quads.size() + triangles.size(); }
 };
 
 // Throws std::invalid_argument if anything in the scene is invalid (for scenes
