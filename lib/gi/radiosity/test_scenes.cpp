@@ -67,13 +67,14 @@ RadiosityScene open_box(double side) {
 
 RadiosityScene occluded_squares(double side, double distance) {
   require_positive(side, distance);
-  const double a = side, b = 0.5 * side, m = 0.5 * distance;
-  // The blocker is two half-size squares back to back: opaque from both sides.
+  const double a = side, b = 0.5 * side, m = 0.5 * distance, gap = 0.005 * side;
+  // The blocker is two half-size squares back to back, 1% of a side apart (a thin
+  // slab): opaque from both sides, with no tie between its faces for a z-buffer.
   return {"occluded",
           {square("bottom", {0, 0, 0}, {0, 0, a}, {a, 0, 0}, black, emitter),
            square("top", {0, distance, 0}, {a, 0, 0}, {0, 0, a}, grey),
-           square("blocker underside", {0, m, 0}, {b, 0, 0}, {0, 0, b}, grey),
-           square("blocker top", {0, m, 0}, {0, 0, b}, {b, 0, 0}, grey)},
+           square("blocker underside", {0, m - gap, 0}, {b, 0, 0}, {0, 0, b}, grey),
+           square("blocker top", {0, m + gap, 0}, {0, 0, b}, {b, 0, 0}, grey)},
           Camera{{2 * a, 1.5 * distance, 3 * a}, {0, 0.5 * distance, 0}, {0, 1, 0}, 40}};
 }
 

@@ -1,0 +1,68 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gi/accel/world.hpp"
+#include "gi/radiosity/form_factor_matrix.hpp"
+#include "gi/radiosity/polygon.hpp"
+
+namespace gi {
+
+// The lecture's ways to compute a row of form factors F_ij, from one polygon i (a
+// patch or an element) to every polygon j of the scene, behind one interface:
+//   Differential  the differential formula from centre to centre, times H_ij from a
+//                 shadow ray between the centres (form_factor_formulas.hpp)
+//   Analytic      Lambert's contour integral, exact from a point, averaged over i with
+//                 Gauss-Legendre points: exact without occlusion, blind to it
+//   MonteCarlo    Nusselt's analogue by sampling: rays from random points of i in
+//                 cosine-distributed directions; F_ij = the fraction that hits j first
+//   Hemicube      the hemicube at i's centre (form_factor_hemicube.hpp)
+enum class FormFactorMethod { Differential, Analytic, MonteCarlo, Hemicube };
+std::string name(FormFactorMethod method);  // "differential", "analytic", "monte-carlo", "hemicube"
+std::vector<std::string> form_factor_method_names();
+FormFactorMethod form_factor_method_from_name(const std::string& name);  // throws std::invalid_argument
+
+struct FormFactorSettings {
+  FormFactorMethod method = FormFactorMethod::Hemicube;
+  int hemicube_resolution = 100;  // Hemicube: cells across the top face (even, 2..2000)
+  int quadrature_order = 3;       // Analytic: order x order points over the sender (1..16)
+  int rays = 1024;                // MonteCarlo: rays per row (1..10^8)
+  bool occlusion = true;          // Differential: test visibility between the centres
+  std::uint64_t seed = 1;         // MonteCarlo: row i draws from stream i of this seed
+};
+void check(const FormFactorSettings& settings);  // throws std::invalid_argument
+
+// What form factors are computed against: the receiving polygons (usually a mesh's
+// elements, element_shapes(mesh)) and a World of them for the methods that cast rays,
+// each polygon two triangles there.
+class FormFactorScene {
+ public:
+  explicit FormFactorScene(std::vector<Polygon> polygons);
+  const std::vector<Polygon>& polygons() const { return polygons_; }
+
+  // The polygon a ray meets first (from either side: a back face blocks too).
+  struct RayHit {
+    int polygon;
+    bool front;  // the ray arrives on the polygon's lit side
+  };
+  std::optional<RayHit> first_hit(const Ray& ray) const;
+
+  // Can the points see each other? Nothing strictly between them (the ends excluded).
+  bool visible(const vec3& from, const vec3& to) const;
+
+ private:
+  std::vector<Polygon> polygons_;
+  World world_;
+};
+
+// F from `from` to every polygon of the scene. `row` picks the random stream
+// (MonteCarlo), so that a matrix is the same for any thread count.
+std::vector<double> form_factor_row(const FormFactorScene& scene, const Polygon& from, int row,
+                                    const FormFactorSettings& settings);
+
+// Every row, from every polygon of the scene to every other, in parallel (0: all cores).
+FormFactorMatrix form_factor_matrix(const FormFactorScene& scene, const FormFactorSettings& settings, int threads);
+
+}  // namespace gi
