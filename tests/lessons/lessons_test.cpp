@@ -42,8 +42,9 @@ std::string bytes(const fs::path& file) {
 
 // Every lesson, and the ones that render an image of a scene (which take --width,
 // --height and, but for 04, --scene).
-const char* const lessons[] = {"01_rays",          "02_recursive", "03_antialiasing", "04_soft_shadows", "05_acceleration",
-                               "07_hemicube",      "09_jacobi_gauss_seidel", "10_southwell"};
+const char* const lessons[] = {"01_rays",        "02_recursive", "03_antialiasing",        "04_soft_shadows",
+                               "05_acceleration", "06_form_factors", "07_hemicube", "09_jacobi_gauss_seidel",
+                               "10_southwell"};
 const char* const rendering[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows"};
 
 bool renders(const std::string& lesson) {
@@ -116,6 +117,15 @@ TEST(Lessons, SoftShadowsMeasuresThePenumbraAndWritesImages) {
   for (const char* file : {"penumbra_by_light_size.png", "hard.png", "jittered_16.png", "shadow_crops.png",
                            "reference.png", "penumbra.csv", "shadow_rays.csv", "error_vs_time.svg"})
     EXPECT_TRUE(fs::exists(out_dir("04") + "/" + file)) << file;
+}
+
+TEST(Lessons, FormFactorsCompareEveryMethodWithTheClosedForms) {
+  const LessonRun r = run("06_form_factors", "--rays 200 --resolution 20 --order 2 --out " + out_dir("06"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("Howell C-14"), std::string::npos);
+  for (const char* file : {"validation.csv", "near_field.csv", "hemicube_aliasing.csv", "error_vs_time.svg"})
+    EXPECT_TRUE(fs::exists(out_dir("06") + "/" + file)) << file;
+  EXPECT_EQ(run("06_form_factors", "--resolution 33").status, 2) << "odd resolutions are refused";
 }
 
 TEST(Lessons, HemicubeWritesItsPicturesAndTables) {

@@ -1,0 +1,231 @@
+// Lesson 06 -- form factors: the differential formula, the analytic contour integral,
+// Monte Carlo (Nusselt's analogue by rays) and the hemicube, on the configurations
+// whose exact answers the heat-transfer literature gives; where each fails (near
+// field, occlusion, aliasing, noise) and what its accuracy costs.
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "gi/core/timer.hpp"
+#include "gi/radiosity/configuration_factors.hpp"
+#include "gi/radiosity/form_factor_formulas.hpp"
+#include "gi/radiosity/form_factors.hpp"
+#include "gi/report/chart.hpp"
+#include "gi/report/lesson.hpp"
+#include "gi/report/options.hpp"
+#include "gi/report/table.hpp"
+
+namespace {
+
+using gi::FormFactorMethod;
+using gi::vec3;
+
+// A w x h rectangle centred at `centre`, spanned by unit vectors u and v, facing u x v.
+gi::Polygon rectangle(vec3 centre, vec3 u, vec3 v, double w, double h) {
+  const vec3 c0 = centre - 0.5 * w * u - 0.5 * h * v;
+  return gi::make_polygon({c0, c0 + w * u, c0 + w * u + h * v, c0 + h * v});
+}
+
+// Two unit squares facing each other at distance d (sender first, facing up).
+std::vector<gi::Polygon> facing_squares(double d) {
+  return {rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1, 1), rectangle({0, d, 0}, {1, 0, 0}, {0, 0, 1}, 1, 1)};
+}
+
+struct Case {
+  std::string name;
+  std::vector<gi::Polygon> polygons;  // F from polygons[0] to polygons[1]
+  double exact;
+  std::string source;  // where the exact value comes from
+};
+
+std::vector<Case> cases(double& occluded_reference_ms) {
+  std::vector<Case> list;
+  list.push_back({"parallel squares, d = 1", facing_squares(1), gi::ff_parallel_rectangles(1, 1, 1), "Howell C-11"});
+  list.push_back({"parallel squares, d = 0.2", facing_squares(0.2), gi::ff_parallel_rectangles(1, 1, 0.2), "Howell C-11"});
+  list.push_back({"parallel squares, d = 5", facing_squares(5), gi::ff_parallel_rectangles(1, 1, 5), "Howell C-11"});
+  list.push_back({"perpendicular squares",
+                  {rectangle({0.5, 0, 0.5}, {0, 0, 1}, {1, 0, 0}, 1, 1), rectangle({0.5, 0.5, 0}, {1, 0, 0}, {0, 1, 0}, 1, 1)},
+                  gi::ff_perpendicular_rectangles(1, 1, 1), "Howell C-14"});
+  // A sender of 1 mm^2 is a differential area; the rectangle's corner is above it.
+  list.push_back({"point to rectangle",
+                  {rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1e-3, 1e-3),
+                   rectangle({0.65, 0.9, 0.3}, {1, 0, 0}, {0, 0, 1}, 1.3, 0.6)},
+                  gi::ff_point_to_parallel_rectangle_corner(1.3, 0.6, 0.9), "Howell B-3"});
+  // A blocker halfway: no closed form; the reference is Monte Carlo with 4 million rays.
+  std::vector<gi::Polygon> blocked = facing_squares(2);
+  blocked.push_back(rectangle({0, 0.995, 0}, {1, 0, 0}, {0, 0, 1}, 0.5, 0.5));  // underside, facing down
+  blocked.push_back(rectangle({0, 1.005, 0}, {0, 0, 1}, {1, 0, 0}, 0.5, 0.5));  // top, facing up
+  gi::FormFactorSettings reference;
+  reference.method = FormFactorMethod::MonteCarlo;
+  reference.rays = 4'000'000;
+  const gi::Timer timer;
+  const double f = gi::form_factor_row(gi::FormFactorScene(blocked), blocked[0], 0, reference)[1];
+  occluded_reference_ms = timer.milliseconds();
+  list.push_back({"occluded squares, d = 2", blocked, f, "Monte Carlo, 4M rays"});
+  return list;
+}
+
+// F from polygons[0] to polygons[1] by `settings`, and its time in microseconds
+// (median of at least three runs, and of enough runs to fill 20 ms).
+// `row` picks the random stream of a Monte Carlo estimate; `runs` is the least
+// number of timed runs.
+std::pair<double, double> evaluate(const gi::FormFactorScene& scene, const gi::FormFactorSettings& settings,
+                                   int row = 0, std::size_t runs = 3) {
+  std::vector<double> times;
+  double value = 0, total = 0;
+  while (times.size() < runs || (total < 0.02 && times.size() < 1000)) {
+    const gi::Timer timer;
+    value = gi::form_factor_row(scene, scene.polygons()[0], row, settings)[1];
+    times.push_back(timer.seconds());
+    total += times.back();
+  }
+  return {value, 1e6 * gi::median(times)};
+}
+
+gi::FormFactorSettings with(FormFactorMethod method, const gi::FormFactorSettings& base) {
+  gi::FormFactorSettings s = base;
+  s.method = method;
+  return s;
+}
+
+const FormFactorMethod methods[] = {FormFactorMethod::Differential, FormFactorMethod::Analytic,
+                                    FormFactorMethod::MonteCarlo, FormFactorMethod::Hemicube};
+
+void every_method_every_case(const std::vector<Case>& list, const gi::FormFactorSettings& base, const std::string& out) {
+  gi::Table table("Every method on every validation case (analytic order " + std::to_string(base.quadrature_order) +
+                      ", " + std::to_string(base.rays) + " rays, hemicube " + std::to_string(base.hemicube_resolution) + ")",
+                  {{"case"}, {"method"}, {"F", 5}, {"exact", 5}, {"rel. error", 2, gi::Format::Scientific},
+                   {"us", 1}, {"exact from"}});
+  for (const Case& c : list) {
+    const gi::FormFactorScene scene(c.polygons);
+    for (FormFactorMethod m : methods) {
+      const auto [value, us] = evaluate(scene, with(m, base));
+      table.add_row({c.name, gi::name(m), value, c.exact, std::abs(value - c.exact) / c.exact, us, c.source});
+    }
+  }
+  table.print();
+  table.write_csv(out + "/validation.csv");
+}
+
+void near_field(const gi::FormFactorSettings& base, const std::string& out) {
+  gi::Table table("As two unit squares approach: relative error of each method",
+                  {{"distance", 2}, {"exact F", 4}, {"differential", 2, gi::Format::Scientific},
+                   {"analytic", 2, gi::Format::Scientific}, {"monte-carlo", 2, gi::Format::Scientific},
+                   {"hemicube", 2, gi::Format::Scientific}, {"point formula F", 3}});
+  for (double d : {5.0, 2.0, 1.0, 0.5, 0.2, 0.1}) {
+    const gi::FormFactorScene scene(facing_squares(d));
+    const double exact = gi::ff_parallel_rectangles(1, 1, d);
+    std::vector<gi::Cell> row{d, exact};
+    double point = 0;
+    for (FormFactorMethod m : methods) {
+      const double value = evaluate(scene, with(m, base)).first;
+      if (m == FormFactorMethod::Differential) point = value;
+      row.push_back(std::abs(value - exact) / exact);
+    }
+    row.push_back(point);
+    table.add_row(row);
+  }
+  table.print();
+  table.write_csv(out + "/near_field.csv");
+}
+
+void hemicube_aliasing(const std::string& out) {
+  // A 5 cm square ever farther above a unit square's centre, a little off-axis. The
+  // reference is the contour integral from that centre: exactly what a hemicube
+  // estimates, so the error left is the cells' alone.
+  gi::Table table("Hemicube aliasing: a 5 cm square at distance d (relative error against the exact point value)",
+                  {{"d", 1}, {"exact F", 2, gi::Format::Scientific}, {"res 50", 2, gi::Format::Scientific},
+                   {"res 100", 2, gi::Format::Scientific}, {"res 200", 2, gi::Format::Scientific},
+                   {"res 400", 2, gi::Format::Scientific}});
+  for (double d : {0.5, 1.0, 2.0, 4.0, 8.0}) {
+    const std::vector<gi::Polygon> polygons = {rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1, 1),
+                                               rectangle({0.13 * d, d, 0.07 * d}, {1, 0, 0}, {0, 0, 1}, 0.05, 0.05)};
+    const gi::FormFactorScene scene(polygons);
+    const double exact = gi::form_factor_point_to_polygon(polygons[0].centre, polygons[0].normal, polygons[1]);
+    std::vector<gi::Cell> row{d, exact};
+    for (int res : {50, 100, 200, 400}) {
+      gi::FormFactorSettings s;
+      s.hemicube_resolution = res;
+      row.push_back(std::abs(evaluate(scene, s).first - exact) / exact);
+    }
+    table.add_row(row);
+  }
+  table.print();
+  table.write_csv(out + "/hemicube_aliasing.csv");
+}
+
+// Error against time for each method over its parameter, on two unit squares at d = 1.
+void error_against_time(const std::string& out) {
+  const gi::FormFactorScene scene(facing_squares(1));
+  const double exact = gi::ff_parallel_rectangles(1, 1, 1);
+  gi::Table table("Error against time, parallel squares d = 1 (Monte Carlo: RMS of 16 estimates, F their mean)",
+                  {{"method"}, {"parameter"}, {"F", 6}, {"rel. error", 2, gi::Format::Scientific}, {"us", 1}});
+  std::vector<gi::Series> curves;
+  const auto sweep = [&](FormFactorMethod m, const std::string& parameter, const std::vector<int>& values,
+                         const std::function<void(gi::FormFactorSettings&, int)>& set) {
+    gi::Series series{gi::name(m), {}, {}};
+    for (int v : values) {
+      gi::FormFactorSettings s;
+      s.method = m;
+      set(s, v);
+      // Monte Carlo's error is noise: its root mean square over 16 independent
+      // estimates, not the luck of one.
+      const int estimates = m == FormFactorMethod::MonteCarlo ? 16 : 1;
+      double square = 0, us = 0, value = 0;
+      for (int r = 0; r < estimates; ++r) {
+        const auto [f, t] = evaluate(scene, s, r, 1);
+        square += (f - exact) * (f - exact) / estimates, us += t / estimates, value += f / estimates;
+      }
+      const double error = std::max(std::sqrt(square) / exact, 1e-16);
+      table.add_row({gi::name(m), parameter + " " + std::to_string(v), value, error, us});
+      series.x.push_back(us);
+      series.y.push_back(error);
+    }
+    curves.push_back(series);
+  };
+  sweep(FormFactorMethod::Differential, "-", {0}, [](gi::FormFactorSettings&, int) {});
+  sweep(FormFactorMethod::Analytic, "order", {1, 2, 3, 4, 6, 8, 12}, [](auto& s, int v) { s.quadrature_order = v; });
+  sweep(FormFactorMethod::MonteCarlo, "rays", {100, 1000, 10000, 100000, 1000000}, [](auto& s, int v) { s.rays = v; });
+  sweep(FormFactorMethod::Hemicube, "res", {10, 20, 50, 100, 200, 400}, [](auto& s, int v) { s.hemicube_resolution = v; });
+  table.print();
+  table.write_csv(out + "/error_vs_time.csv");
+  curves.front().mark = gi::Mark::Points;
+  gi::write_svg({"Form factor of two unit squares at d = 1: error against time", "time per evaluation (us)",
+                 "relative error", true, true, curves},
+                out + "/error_vs_time.svg");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return gi::run_lesson("06_form_factors", [&] {
+    gi::CommonOptions common;
+    gi::FormFactorSettings base;
+    base.rays = 10000;
+    base.quadrature_order = 4;
+    gi::Options options("06_form_factors", "Form factors: differential, analytic, Monte Carlo and hemicube against "
+                                           "closed forms; near field, occlusion, aliasing, noise; error against time.");
+    gi::add_common_options(options, common, "06_form_factors");
+    options.add("--rays", base.rays, "Monte Carlo rays per form factor", 1, 10'000'000)
+        .add("--order", base.quadrature_order, "analytic: order x order Gauss points", 1, 16)
+        .add("--resolution", base.hemicube_resolution, "hemicube cells across the top face (even)", 2, 2000);
+    if (!options.parse(argc, argv)) return 0;
+    if (base.hemicube_resolution % 2) throw gi::OptionError("the hemicube resolution must be even");
+    base.seed = common.seed;
+    const std::string& out = common.out;
+    double reference_ms = 0;
+    const std::vector<Case> list = cases(reference_ms);
+    every_method_every_case(list, base, out);
+    std::cout << "(the occluded case's reference took " << gi::format_number(reference_ms, 0, gi::Format::Fixed)
+              << " ms)\n\n";
+    near_field(base, out);
+    std::cout << '\n';
+    hemicube_aliasing(out);
+    std::cout << '\n';
+    error_against_time(out);
+    std::cout << "\ntables and chart: " << out << "/\n";
+    return 0;
+  });
+}
