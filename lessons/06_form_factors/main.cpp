@@ -42,17 +42,17 @@ struct Case {
 
 std::vector<Case> cases(double& occluded_reference_ms) {
   std::vector<Case> list;
-  list.push_back({"parallel squares, d = 1", facing_squares(1), gi::ff_parallel_rectangles(1, 1, 1), "Howell C-11"});
-  list.push_back({"parallel squares, d = 0.2", facing_squares(0.2), gi::ff_parallel_rectangles(1, 1, 0.2), "Howell C-11"});
-  list.push_back({"parallel squares, d = 5", facing_squares(5), gi::ff_parallel_rectangles(1, 1, 5), "Howell C-11"});
+  list.push_back({"parallel squares, d = 1", facing_squares(1), gi::ff_parallel_rectangles(1, 1, 1), "closed form"});
+  list.push_back({"parallel squares, d = 0.2", facing_squares(0.2), gi::ff_parallel_rectangles(1, 1, 0.2), "closed form"});
+  list.push_back({"parallel squares, d = 5", facing_squares(5), gi::ff_parallel_rectangles(1, 1, 5), "closed form"});
   list.push_back({"perpendicular squares",
                   {rectangle({0.5, 0, 0.5}, {0, 0, 1}, {1, 0, 0}, 1, 1), rectangle({0.5, 0.5, 0}, {1, 0, 0}, {0, 1, 0}, 1, 1)},
-                  gi::ff_perpendicular_rectangles(1, 1, 1), "Howell C-14"});
+                  gi::ff_perpendicular_rectangles(1, 1, 1), "closed form"});
   // A sender of 1 mm^2 is a differential area; the rectangle's corner is above it.
   list.push_back({"point to rectangle",
                   {rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1e-3, 1e-3),
                    rectangle({0.65, 0.9, 0.3}, {1, 0, 0}, {0, 0, 1}, 1.3, 0.6)},
-                  gi::ff_point_to_parallel_rectangle_corner(1.3, 0.6, 0.9), "Howell B-3"});
+                  gi::ff_point_to_parallel_rectangle_corner(1.3, 0.6, 0.9), "closed form"});
   // A blocker halfway: no closed form; the reference is Monte Carlo with 4 million rays.
   std::vector<gi::Polygon> blocked = facing_squares(2);
   blocked.push_back(rectangle({0, 0.995, 0}, {1, 0, 0}, {0, 0, 1}, 0.5, 0.5));  // underside, facing down

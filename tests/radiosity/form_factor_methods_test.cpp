@@ -105,3 +105,45 @@ TEST(FormFactorMethods, FirstHitAndVisibility) {
   bad.hemicube_resolution = 33;
   EXPECT_THROW(gi::check(bad), std::invalid_argument);
 }
+
+TEST(FormFactorMethods, AnalyticMatrixIsReciprocalAndFlatPatchesSeeNothingOfThemselves) {
+  // Two facing squares cut into elements of different sizes (3 x 3 and 4 x 4), so
+  // reciprocity is not symmetry: A_i F_ij = A_j F_ji to quadrature accuracy. (Pairs that
+  // share an edge, like the Cornell floor and a block, converge far more slowly: their
+  // integrand is singular along the edge.)
+  gi::RadiosityScene pair = gi::parallel_squares(1.0, 0.5);
+  std::vector<gi::Polygon> polygons;
+  for (int s = 0; s < 2; ++s) {
+    const gi::Mesh mesh = gi::make_mesh({pair.surfaces[s]}, {1.0, s == 0 ? 3 : 4});
+    for (const gi::Polygon& p : gi::element_shapes(mesh)) polygons.push_back(p);
+  }
+  const gi::FormFactorScene scene(polygons);
+  gi::FormFactorSettings analytic = with(gi::FormFactorMethod::Analytic);
+  analytic.quadrature_order = 8;
+  const gi::FormFactorMatrix F = gi::form_factor_matrix(scene, analytic, 2);
+  std::vector<double> areas;
+  for (const gi::Polygon& p : polygons) areas.push_back(p.area);
+  EXPECT_LT(gi::reciprocity_error(F, areas), 1e-6);
+  // Coplanar elements and each element itself: F = 0, for every method (the hemicube
+  // sees up to 1e-7 of a neighbour on the red wall, which is twisted by 3 mm).
+  const gi::Mesh cornell = gi::make_mesh(gi::cornell_box().surfaces, {300.0, 1});
+  const gi::FormFactorScene box(gi::element_shapes(cornell));
+  for (const gi::FormFactorSettings& s : {analytic, with(gi::FormFactorMethod::Hemicube)}) {
+    const gi::FormFactorMatrix M = gi::form_factor_matrix(box, s, 2);
+    for (int i = 0; i < M.n; ++i)
+      for (int j = 0; j < M.n; ++j)
+        if (cornell.elements[i].surface == cornell.elements[j].surface) {
+          ASSERT_LT(M(i, j), 1e-6) << gi::name(s.method) << " " << i << " " << j;
+        }
+  }
+}
+
+TEST(FormFactorMethods, SymmetricScenesGiveSymmetricRows) {
+  // From the floor's centre of a closed cube, the four walls are alike.
+  const gi::FormFactorScene scene = scene_of(gi::closed_box(1.0));
+  for (const gi::FormFactorSettings& s : {with(gi::FormFactorMethod::Hemicube), with(gi::FormFactorMethod::Analytic)}) {
+    const std::vector<double> row = gi::form_factor_row(scene, scene.polygons()[0], 0, s);
+    for (int wall = 3; wall < 6; ++wall) EXPECT_NEAR(row[wall], row[2], 2e-3) << gi::name(s.method);
+    EXPECT_NEAR(std::accumulate(row.begin(), row.end(), 0.0), 1.0, 2e-3) << gi::name(s.method);
+  }
+}

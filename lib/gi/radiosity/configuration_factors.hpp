@@ -1,8 +1,9 @@
 #pragma once
 // Exact form factors ("configuration factors") of the heat-transfer literature, for
-// the simple shapes every form-factor method is checked against. From J. R. Howell's
-// "A Catalog of Radiation Heat Transfer Configuration Factors" (cases B-3, C-11,
-// C-14), as also given in Siegel and Howell, "Thermal Radiation Heat Transfer".
+// the simple shapes every form-factor method is checked against: as catalogued in
+// J. R. Howell's "A Catalog of Radiation Heat Transfer Configuration Factors" and in
+// Siegel and Howell, "Thermal Radiation Heat Transfer". The tests check each against
+// numerical integration as well.
 
 namespace gi {
 

@@ -36,7 +36,10 @@ double contour_integral(const vec3& x, const vec3& n, const vec3* vertices, int 
 }
 
 double form_factor_point_to_polygon(const vec3& x, const vec3& n, const Polygon& polygon) {
-  if (dot(polygon.normal, x - polygon.centre) <= 0) return 0;  // x sees its back
+  // x sees its back: nothing. And a point facing the way the polygon faces can never
+  // see its front -- which also makes F_ii = 0 for a patch and its coplanar
+  // neighbours, without trusting round-off (or a twisted wall's 3 mm) to decide.
+  if (dot(polygon.normal, x - polygon.centre) <= 0 || dot(n, polygon.normal) > 1 - 1e-6) return 0;
   // Clip to the half-space in front of x (Sutherland-Hodgman against one plane).
   vec3 clipped[8];
   int count = 0;
