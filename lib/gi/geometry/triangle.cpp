@@ -21,11 +21,14 @@ std::optional<Hit> intersect(const Ray& ray, const Triangle& triangle) {
   if (std::abs(determinant) <= 1e-14 * length(e1) * length(p)) return std::nullopt;
   const double inverse = 1.0 / determinant;
   const vec3 s = ray.origin - triangle.a;
+  // The edges are widened by a hair (1e-12 of the barycentric range) so that two
+  // triangles sharing an edge leave no crack for a ray to slip through by round-off.
+  constexpr double hair = 1e-12;
   const double u = dot(s, p) * inverse;
-  if (u < 0 || u > 1) return std::nullopt;
+  if (u < -hair || u > 1 + hair) return std::nullopt;
   const vec3 q = cross(s, e1);
   const double v = dot(ray.direction, q) * inverse;
-  if (v < 0 || u + v > 1) return std::nullopt;
+  if (v < -hair || u + v > 1 + hair) return std::nullopt;
   const double t = dot(e2, q) * inverse;
   if (!(t >= ray.t_min && t <= ray.t_max)) return std::nullopt;
   return Hit{t, ray.at(t), normalize(cross(e1, e2)), triangle.material};

@@ -98,7 +98,7 @@ std::optional<FormFactorScene::RayHit> FormFactorScene::first_hit(const Ray& ray
   const std::optional<Hit> hit = closest_hit(world_, ray);
   if (!hit) return std::nullopt;
   const int polygon = hit->object / 2;
-  return RayHit{polygon, dot(ray.direction, polygons_[polygon].normal) < 0};
+  return RayHit{polygon, dot(ray.direction, polygons_[polygon].normal) < 0, hit->t};
 }
 
 bool FormFactorScene::visible(const vec3& from, const vec3& to) const {

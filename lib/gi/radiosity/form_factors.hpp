@@ -46,6 +46,7 @@ class FormFactorScene {
   struct RayHit {
     int polygon;
     bool front;  // the ray arrives on the polygon's lit side
+    double t;    // where along the ray
   };
   std::optional<RayHit> first_hit(const Ray& ray) const;
 

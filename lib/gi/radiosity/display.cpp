@@ -1,0 +1,67 @@
+#include "gi/radiosity/display.hpp"
+
+#include <stdexcept>
+
+#include "gi/core/parallel.hpp"
+#include "gi/core/rng.hpp"
+#include "gi/radiosity/vertex_colours.hpp"
+
+namespace gi {
+
+namespace {
+
+// (s, t) with bilinear(c, s, t) = p for a point p of a flat convex quadrilateral, by
+// Newton's method from the middle: the map is nearly affine, three steps suffice.
+vec2 unbilinear(const std::array<vec3, 4>& c, const vec3& n, const vec3& p) {
+  vec2 st(0.5, 0.5);
+  for (int step = 0; step < 4; ++step) {
+    const vec3 r = bilinear(c, st.x, st.y) - p;
+    const vec3 ds = (1 - st.y) * (c[1] - c[0]) + st.y * (c[2] - c[3]);
+    const vec3 dt = (1 - st.x) * (c[3] - c[0]) + st.x * (c[2] - c[1]);
+    // Solve [ds dt] (delta) = r in the plane: Cramer with the normal.
+    const double det = dot(cross(ds, dt), n);
+    if (std::abs(det) < 1e-300) break;
+    st -= vec2(dot(cross(r, dt), n), dot(cross(ds, r), n)) / det;
+  }
+  return glm::clamp(st, 0.0, 1.0);
+}
+
+}  // namespace
+
+Image render_radiosity(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
+                       const Camera& camera, const DisplaySettings& settings) {
+  if (B.size() != mesh.elements.size() || scene.polygons().size() != mesh.elements.size())
+    throw std::invalid_argument("radiosity display: one B per element, and a scene of the mesh's elements");
+  if (settings.samples < 1 || settings.samples > 16) throw std::invalid_argument("display: samples must lie in [1, 16]");
+  const CameraFrame frame = camera_frame(camera, settings.width, settings.height);
+  const std::vector<Color> vertex_B =
+      settings.shading == Shading::Smooth ? vertex_radiosity(mesh, B) : std::vector<Color>();
+  Image image(settings.width, settings.height);
+  const int n = settings.samples;
+  parallel_for(settings.height, settings.threads, [&](int y) {
+    for (int x = 0; x < settings.width; ++x) {
+      Rng rng(settings.seed, static_cast<std::uint64_t>(y) * settings.width + x);
+      Color sum(0.0);
+      for (int k = 0; k < n * n; ++k) {
+        const double px = x + (k % n + rng.uniform()) / n, py = y + (k / n + rng.uniform()) / n;
+        const Ray ray = primary_ray(frame, px, py);
+        const auto hit = scene.first_hit(ray);
+        if (!hit || !hit->front) continue;
+        const Element& e = mesh.elements[hit->polygon];
+        if (settings.shading == Shading::Flat) {
+          sum += B[hit->polygon];
+          continue;
+        }
+        const auto hit_point = ray.at(hit->t);
+        const vec2 st = unbilinear(e.shape.corners, e.shape.normal, hit_point);
+        const auto& v = e.vertices;
+        sum += (1 - st.x) * (1 - st.y) * vertex_B[v[0]] + st.x * (1 - st.y) * vertex_B[v[1]] +
+               st.x * st.y * vertex_B[v[2]] + (1 - st.x) * st.y * vertex_B[v[3]];
+      }
+      image.at(x, y) = Pixel(sum / (pi * n * n));  // radiance L = B / pi
+    }
+  });
+  return image;
+}
+
+}  // namespace gi

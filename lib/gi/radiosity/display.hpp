@@ -1,0 +1,34 @@
+#pragma once
+#include <vector>
+
+#include "gi/image/image.hpp"
+#include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/mesh.hpp"
+#include "gi/scene/camera.hpp"
+
+namespace gi {
+
+// Radiosity is view-independent: once B is known, any camera can look at it. A
+// picture is made by casting one eye ray per pixel (jittered over the pixel, a few
+// per pixel) into the elements and showing the radiance L = B / pi of the point hit:
+//   Flat    the element's own B: every element a tile of one colour
+//   Smooth  Gouraud's: B interpolated bilinearly from the element's four vertex
+//           colours (vertex_radiosity), so the tiles blend
+// The image holds radiance; write it with an exposure (write_png) to taste.
+enum class Shading { Flat, Smooth };
+
+struct DisplaySettings {
+  int width = 320;
+  int height = 320;
+  int samples = 2;  // n x n jittered eye rays per pixel, box-filtered
+  Shading shading = Shading::Smooth;
+  int threads = 0;
+  std::uint64_t seed = 1;
+};
+
+// `scene` must be built from element_shapes(mesh); B holds one radiosity per element.
+// Backs of surfaces and the void show black. Same image for any thread count.
+Image render_radiosity(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
+                       const Camera& camera, const DisplaySettings& settings);
+
+}  // namespace gi

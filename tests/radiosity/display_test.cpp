@@ -1,0 +1,49 @@
+#include "gi/radiosity/display.hpp"
+
+#include <gtest/gtest.h>
+
+#include "gi/radiosity/radiosity_scenes.hpp"
+
+TEST(Display, AUniformRoomShowsItsRadianceEverywhere) {
+  // Inside a closed box whose every element has B = 2: every pixel is L = 2 / pi, flat
+  // or smooth (the vertex colours of a constant field are that constant).
+  const gi::RadiosityScene box = gi::closed_box(1.0);
+  const gi::Mesh mesh = gi::make_mesh(box.surfaces, {0.25, 2});
+  const gi::FormFactorScene scene(gi::element_shapes(mesh));
+  const std::vector<gi::Color> B(mesh.elements.size(), gi::Color(2.0));
+  const gi::Camera inside{{0.5, 0.5, 0.9}, {0.4, 0.3, 0.0}, {0, 1, 0}, 70};
+  for (gi::Shading shading : {gi::Shading::Flat, gi::Shading::Smooth}) {
+    gi::DisplaySettings settings;
+    settings.width = 24;
+    settings.height = 16;
+    settings.shading = shading;
+    const gi::Image image = gi::render_radiosity(scene, mesh, B, inside, settings);
+    for (const gi::Pixel& p : image.pixels) ASSERT_NEAR(p.y, 2.0 / gi::pi, 1e-5);
+  }
+}
+
+TEST(Display, SmoothShadingInterpolatesAcrossAnElement) {
+  // One wall of two elements, B = 0 and 1: flat shading shows two tiles, smooth shading
+  // a ramp whose middle (the shared edge) is the mean.
+  gi::RadiosityScene wall = gi::perpendicular_squares(1.0);
+  wall.surfaces.erase(wall.surfaces.begin());  // keep the wall at z = 0, facing +z
+  const gi::Mesh mesh = gi::make_mesh(wall.surfaces, {0.5, 1});
+  ASSERT_EQ(mesh.elements.size(), 4u);
+  std::vector<gi::Color> B;
+  for (const gi::Element& e : mesh.elements) B.push_back(gi::Color(e.shape.centre.x < 0.5 ? 0.0 : 1.0));
+  const gi::FormFactorScene scene(gi::element_shapes(mesh));
+  const gi::Camera front{{0.5, 0.5, 2.0}, {0.5, 0.5, 0.0}, {0, 1, 0}, 20};
+  gi::DisplaySettings settings;
+  settings.width = 40;
+  settings.height = 40;
+  settings.samples = 1;
+  const gi::Image smooth = gi::render_radiosity(scene, mesh, B, front, settings);
+  settings.shading = gi::Shading::Flat;
+  const gi::Image flat = gi::render_radiosity(scene, mesh, B, front, settings);
+  // Looking along -z with +y up, +x is to the right: B = 0 on the left half.
+  EXPECT_NEAR(flat.at(5, 20).x, 0.0, 1e-6);
+  EXPECT_NEAR(flat.at(34, 20).x, 1.0 / gi::pi, 1e-6);
+  EXPECT_GT(smooth.at(21, 20).x, 0.2 / gi::pi);
+  EXPECT_LT(smooth.at(21, 20).x, 0.8 / gi::pi);
+  EXPECT_LT(smooth.at(5, 20).x, smooth.at(15, 20).x) << "a ramp, not tiles";
+}
