@@ -40,7 +40,7 @@ struct Case {
   std::string source;  // where the exact value comes from
 };
 
-std::vector<Case> cases(double& occluded_reference_ms) {
+std::vector<Case> cases(int reference_rays, double& occluded_reference_ms) {
   std::vector<Case> list;
   list.push_back({"parallel squares, d = 1", facing_squares(1), gi::ff_parallel_rectangles(1, 1, 1), "closed form"});
   list.push_back({"parallel squares, d = 0.2", facing_squares(0.2), gi::ff_parallel_rectangles(1, 1, 0.2), "closed form"});
@@ -53,17 +53,17 @@ std::vector<Case> cases(double& occluded_reference_ms) {
                   {rectangle({0, 0, 0}, {0, 0, 1}, {1, 0, 0}, 1e-3, 1e-3),
                    rectangle({0.65, 0.9, 0.3}, {1, 0, 0}, {0, 0, 1}, 1.3, 0.6)},
                   gi::ff_point_to_parallel_rectangle_corner(1.3, 0.6, 0.9), "closed form"});
-  // A blocker halfway: no closed form; the reference is Monte Carlo with 4 million rays.
+  // A blocker halfway: no closed form; the reference is Monte Carlo with many rays.
   std::vector<gi::Polygon> blocked = facing_squares(2);
   blocked.push_back(rectangle({0, 0.995, 0}, {1, 0, 0}, {0, 0, 1}, 0.5, 0.5));  // underside, facing down
   blocked.push_back(rectangle({0, 1.005, 0}, {0, 0, 1}, {1, 0, 0}, 0.5, 0.5));  // top, facing up
   gi::FormFactorSettings reference;
   reference.method = FormFactorMethod::MonteCarlo;
-  reference.rays = 4'000'000;
+  reference.rays = reference_rays;
   const gi::Timer timer;
   const double f = gi::form_factor_row(gi::FormFactorScene(blocked), blocked[0], 0, reference)[1];
   occluded_reference_ms = timer.milliseconds();
-  list.push_back({"occluded squares, d = 2", blocked, f, "Monte Carlo, 4M rays"});
+  list.push_back({"occluded squares, d = 2", blocked, f, "Monte Carlo, " + std::to_string(reference_rays) + " rays"});
   return list;
 }
 
@@ -157,7 +157,7 @@ void hemicube_aliasing(const std::string& out) {
 }
 
 // Error against time for each method over its parameter, on two unit squares at d = 1.
-void error_against_time(const std::string& out) {
+void error_against_time(int most_rays, const std::string& out) {
   const gi::FormFactorScene scene(facing_squares(1));
   const double exact = gi::ff_parallel_rectangles(1, 1, 1);
   gi::Table table("Error against time, parallel squares d = 1 (Monte Carlo: RMS of 16 estimates, F their mean)",
@@ -187,7 +187,9 @@ void error_against_time(const std::string& out) {
   };
   sweep(FormFactorMethod::Differential, "-", {0}, [](gi::FormFactorSettings&, int) {});
   sweep(FormFactorMethod::Analytic, "order", {1, 2, 3, 4, 6, 8, 12}, [](auto& s, int v) { s.quadrature_order = v; });
-  sweep(FormFactorMethod::MonteCarlo, "rays", {100, 1000, 10000, 100000, 1000000}, [](auto& s, int v) { s.rays = v; });
+  std::vector<int> ray_counts;
+  for (int rays = 100; rays <= most_rays; rays *= 10) ray_counts.push_back(rays);
+  sweep(FormFactorMethod::MonteCarlo, "rays", ray_counts, [](auto& s, int v) { s.rays = v; });
   sweep(FormFactorMethod::Hemicube, "res", {10, 20, 50, 100, 200, 400}, [](auto& s, int v) { s.hemicube_resolution = v; });
   table.print();
   table.write_csv(out + "/error_vs_time.csv");
@@ -205,18 +207,22 @@ int main(int argc, char** argv) {
     gi::FormFactorSettings base;
     base.rays = 10000;
     base.quadrature_order = 4;
+    int sweep_rays = 1'000'000, reference_rays = 4'000'000;
     gi::Options options("06_form_factors", "Form factors: differential, analytic, Monte Carlo and hemicube against "
                                            "closed forms; near field, occlusion, aliasing, noise; error against time.");
     gi::add_common_options(options, common, "06_form_factors");
     options.add("--rays", base.rays, "Monte Carlo rays per form factor", 1, 10'000'000)
         .add("--order", base.quadrature_order, "analytic: order x order Gauss points", 1, 16)
-        .add("--resolution", base.hemicube_resolution, "hemicube cells across the top face (even)", 2, 2000);
+        .add("--resolution", base.hemicube_resolution, "hemicube cells across the top face (even)", 2, 2000)
+        .add("--sweep-rays", sweep_rays, "largest ray count in the error-against-time sweep", 100, 100'000'000)
+        .add("--reference-rays", reference_rays, "Monte Carlo rays of the occluded case's reference", 1000,
+             100'000'000);
     if (!options.parse(argc, argv)) return 0;
     if (base.hemicube_resolution % 2) throw gi::OptionError("the hemicube resolution must be even");
     base.seed = common.seed;
     const std::string& out = common.out;
     double reference_ms = 0;
-    const std::vector<Case> list = cases(reference_ms);
+    const std::vector<Case> list = cases(reference_rays, reference_ms);
     every_method_every_case(list, base, out);
     std::cout << "(the occluded case's reference took " << gi::format_number(reference_ms, 0, gi::Format::Fixed)
               << " ms)\n\n";
@@ -224,7 +230,7 @@ int main(int argc, char** argv) {
     std::cout << '\n';
     hemicube_aliasing(out);
     std::cout << '\n';
-    error_against_time(out);
+    error_against_time(sweep_rays, out);
     std::cout << "\ntables and chart: " << out << "/\n";
     return 0;
   });

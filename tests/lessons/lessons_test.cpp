@@ -42,9 +42,10 @@ std::string bytes(const fs::path& file) {
 
 // Every lesson, and the ones that render an image of a scene (which take --width,
 // --height and, but for 04, --scene).
-const char* const lessons[] = {"01_rays",        "02_recursive", "03_antialiasing",        "04_soft_shadows",
-                               "05_acceleration", "06_form_factors", "07_hemicube", "09_jacobi_gauss_seidel",
-                               "10_southwell"};
+const char* const lessons[] = {"01_rays",         "02_recursive",        "03_antialiasing",
+                               "04_soft_shadows", "05_acceleration",     "06_form_factors",
+                               "07_hemicube",     "08_radiosity_system", "09_jacobi_gauss_seidel",
+                               "10_southwell",    "11_progressive"};
 const char* const rendering[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows"};
 
 bool renders(const std::string& lesson) {
@@ -120,7 +121,8 @@ TEST(Lessons, SoftShadowsMeasuresThePenumbraAndWritesImages) {
 }
 
 TEST(Lessons, FormFactorsCompareEveryMethodWithTheClosedForms) {
-  const LessonRun r = run("06_form_factors", "--rays 200 --resolution 20 --order 2 --out " + out_dir("06"));
+  const LessonRun r = run("06_form_factors", "--rays 200 --resolution 20 --order 2 --sweep-rays 1000 --reference-rays 10000 --out " +
+                                              out_dir("06"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("closed form"), std::string::npos);
   for (const char* file : {"validation.csv", "near_field.csv", "hemicube_aliasing.csv", "error_vs_time.svg"})
@@ -157,6 +159,20 @@ TEST(Lessons, SolverLessonsPrintResidualTables) {
   }
   EXPECT_TRUE(fs::exists(out_dir("09_jacobi_gauss_seidel") + "/residuals.csv"));
   EXPECT_TRUE(fs::exists(out_dir("10_southwell") + "/error_vs_work.svg"));
+}
+
+TEST(Lessons, RadiositySystemAndProgressiveRefinementDrawTheirPictures) {
+  LessonRun r = run("08_radiosity_system", "--elements 60 --resolution 20 --width 32 --height 32 --out " + out_dir("08"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("Neumann"), std::string::npos);
+  for (const char* file : {"neumann_series.png", "matrix_K.png", "solution.png", "solution_flat.png", "cornell.ply"})
+    EXPECT_TRUE(fs::exists(out_dir("08") + "/" + file)) << file;
+  r = run("11_progressive", "--patches 40 --resolution 20 --width 32 --height 32 --speed-elements 200 --out " +
+                                out_dir("11"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("1% unshot"), std::string::npos);
+  for (const char* file : {"snapshots.png", "snapshots_ambient.png", "progressive.csv", "progress.svg"})
+    EXPECT_TRUE(fs::exists(out_dir("11") + "/" + file)) << file;
 }
 
 TEST(Lessons, SameBytesForAnyThreadCount) {

@@ -5,7 +5,7 @@
 namespace gi {
 
 RadiositySystem make_system(const Mesh& mesh, FormFactorMatrix F) {
-  if (F.n != static_cast<int>(mesh.elements.size()))
+  if (F.n != static_cast<int>(mesh.elements.size()) && F.n != 0)
     throw std::invalid_argument("radiosity system: the form-factor matrix does not match the mesh");
   RadiositySystem system;
   for (const Element& e : mesh.elements) {

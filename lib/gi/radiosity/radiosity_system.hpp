@@ -20,8 +20,9 @@ struct RadiositySystem {
   int size() const { return static_cast<int>(area.size()); }
 };
 
-// The system of a mesh's elements with the given form factors.
-// Throws std::invalid_argument when F's size does not match the mesh.
+// The system of a mesh's elements with the given form factors -- or with none (an
+// empty matrix) for progressive refinement, which computes its rows as it shoots.
+// Throws std::invalid_argument when F's size matches neither.
 RadiositySystem make_system(const Mesh& mesh, FormFactorMatrix F);
 
 // The residual r = E - (I - R F) B = E + R F B - B: zero at the solution; r_i is the

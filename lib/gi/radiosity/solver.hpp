@@ -28,7 +28,9 @@ struct SolverOptions {
   double tolerance = 1e-4;  // converged when residual_2 (shooting: the unshot energy) is below it
   int max_steps = 1000;     // iterations, or steps for Southwell and shooting
   const std::vector<Color>* reference = nullptr;           // for the error column
-  std::function<void(const SolverStep&)> observer;         // called after every step
+  // Called with every recorded step, the current B and its residual (for shooting,
+  // the unshot radiosity): progress bars, snapshots, live pictures.
+  std::function<void(const SolverStep&, const std::vector<Color>& B, const std::vector<Color>& r)> observer;
   int record_every = 1;     // history rows: every step, or every k-th (Southwell on big meshes)
 };
 

@@ -71,7 +71,7 @@ bool SolverMonitor::stop_after(int step, const std::vector<Color>& B, const std:
     stop = false;
   if (stop || step % options_.record_every == 0) {
     result_.history.push_back(row);
-    if (options_.observer) options_.observer(row);
+    if (options_.observer) options_.observer(row, B, r);
   }
   clock_.restart();
   return stop;
