@@ -127,8 +127,8 @@ void quad_room_table(int quads, const std::string& out) {
   table.write_csv(out + "/quad_room.csv");
 }
 
-// 3. Every rendering lesson's picture on 1, 2, ... threads.
-void threads_table(const std::string& out) {
+// 3. Every rendering lesson's picture on 1, 2, ... threads, its sides times `scale`.
+void threads_table(double scale, const std::string& out) {
   struct Job {
     std::string name;
     gi::World world;
@@ -136,9 +136,12 @@ void threads_table(const std::string& out) {
   };
   std::vector<Job> jobs;
   gi::RenderSettings s;
-  s.width = 640, s.height = 480, s.trace.max_depth = 8;
+  const auto size = [&](int w, int h) {
+    s.width = std::max(8, static_cast<int>(w * scale)), s.height = std::max(8, static_cast<int>(h * scale));
+  };
+  size(640, 480), s.trace.max_depth = 8;
   jobs.push_back({"02 whitted 640x480 depth 8", gi::make_world(gi::make_scene("whitted")), s});
-  s.width = 320, s.height = 240, s.trace.max_depth = 3, s.sampling = {gi::Sampler::Jittered, 4};
+  size(320, 240), s.trace.max_depth = 3, s.sampling = {gi::Sampler::Jittered, 4};
   jobs.push_back({"03 aliasing, jittered 4x4", gi::make_world(gi::make_scene("aliasing")), s});
   s.sampling = {}, s.trace.max_depth = 1, s.trace.soft_shadows = {gi::LightSampling::Jittered, 4};
   jobs.push_back({"04 soft shadows, 16 rays", gi::make_world(gi::soft_shadow_scene(1.0)), s});
@@ -178,19 +181,21 @@ int main(int argc, char** argv) {
   return gi::run_lesson("05_acceleration", [&] {
     gi::CommonOptions common;
     int width = 160, height = 120, max_spheres = 100000, room_quads = 100000;
+    double picture_scale = 1.0;
     gi::Options options("05_acceleration", "Bounding volumes and threads: brute force, a box per object and a BVH "
                                            "on 10 to 100 000 spheres; a room of quads; speedup per thread.");
     gi::add_common_options(options, common, "05_acceleration");
     options.add("--width", width, "eye-ray image width for the spheres table", 16, 4096)
         .add("--height", height, "eye-ray image height for the spheres table", 16, 4096)
         .add("--max-spheres", max_spheres, "largest sphere count (powers of 10 from 10)", 10, 1000000)
-        .add("--room-quads", room_quads, "quads in the room (about)", 100, 2000000);
+        .add("--room-quads", room_quads, "quads in the room (about)", 100, 2000000)
+        .add("--picture-scale", picture_scale, "scales the pictures of the threads table", 0.05, 4.0);
     if (!options.parse(argc, argv)) return 0;
     spheres_table(max_spheres, width, height, common.out);
     std::cout << '\n';
     quad_room_table(room_quads, common.out);
     std::cout << '\n';
-    threads_table(common.out);
+    threads_table(picture_scale, common.out);
     std::cout << "\ntables and chart: " << common.out << "/\n";
     return 0;
   });

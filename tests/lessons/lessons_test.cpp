@@ -142,8 +142,9 @@ TEST(Lessons, HemicubeWritesItsPicturesAndTables) {
 }
 
 TEST(Lessons, AccelerationTablesAndChart) {
-  const LessonRun r = run("05_acceleration", "--width 20 --height 16 --max-spheres 100 --room-quads 300 --out " +
-                                                 out_dir("05"));
+  const LessonRun r = run("05_acceleration",
+                          "--width 20 --height 16 --max-spheres 100 --room-quads 300 --picture-scale 0.1 --out " +
+                              out_dir("05"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("BVH, SAH"), std::string::npos);
   EXPECT_EQ(r.output.find(" NO"), std::string::npos) << "an image differed between thread counts:\n" << r.output;
