@@ -45,7 +45,7 @@ std::string bytes(const fs::path& file) {
 const char* const lessons[] = {"01_rays",         "02_recursive",        "03_antialiasing",
                                "04_soft_shadows", "05_acceleration",     "06_form_factors",
                                "07_hemicube",     "08_radiosity_system", "09_jacobi_gauss_seidel",
-                               "10_southwell",    "11_progressive"};
+                               "10_southwell",    "11_progressive",      "12_solver_showdown"};
 const char* const rendering[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows"};
 
 bool renders(const std::string& lesson) {
@@ -174,6 +174,17 @@ TEST(Lessons, RadiositySystemAndProgressiveRefinementDrawTheirPictures) {
   EXPECT_NE(r.output.find("1% unshot"), std::string::npos);
   for (const char* file : {"snapshots.png", "snapshots_ambient.png", "progressive.csv", "progress.svg"})
     EXPECT_TRUE(fs::exists(out_dir("11") + "/" + file)) << file;
+}
+
+TEST(Lessons, SolverShowdownDetectsDivergence) {
+  const LessonRun r = run("12_solver_showdown", "--elements 60 --bandwidth-n 200 --skip-mesh-study --out " +
+                                                    out_dir("12"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("diverged"), std::string::npos) << "rho > 1 must be reported";
+  EXPECT_EQ(r.output.find("nan  "), std::string::npos) << r.output;
+  for (const char* file : {"showdown.csv", "error_vs_time.svg", "error_vs_work.svg", "stability.csv", "precision.csv",
+                           "bandwidth.csv"})
+    EXPECT_TRUE(fs::exists(out_dir("12") + "/" + file)) << file;
 }
 
 TEST(Lessons, SameBytesForAnyThreadCount) {
