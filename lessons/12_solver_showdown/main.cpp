@@ -158,7 +158,7 @@ void mesh_resolution(int threads, const std::string& out) {
   gi::Table table("Mesh resolution: time and picture error against " + std::to_string(finest.system.size()) +
                       " elements (smooth shading, 96x96)",
                   {{"elements"}, {"form factors ms", 0}, {"solve ms", 1}, {"picture RMSE", 2, gi::Format::Scientific}});
-  gi::Series curve{"Gauss-Seidel, hemicube 100", {}, {}};
+  gi::Series curve{"meshes", {}, {}};
   sizes.pop_back();
   for (int n : sizes) {
     double ff_ms = 0;
