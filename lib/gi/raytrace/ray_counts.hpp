@@ -2,8 +2,6 @@
 #include <array>
 #include <cstdint>
 
-#include "gi/accel/traversal_counts.hpp"
-
 namespace gi {
 
 // The lecture's four kinds of ray.
@@ -16,11 +14,11 @@ inline constexpr const char* ray_kind_names[ray_kind_count] = {"primary", "shado
 // counts are added afterwards, so the totals do not depend on the thread count.
 // Aligned to a cache line: neighbouring tiles' counts sit side by side in memory, and
 // two threads incrementing counters in one line would keep stealing it from each
-// other (false sharing) -- that alone cost a quarter of the second core.
+// other (false sharing) -- when a busy counter sat at the end of this struct, that
+// alone cost a quarter of the second core (docs/05_acceleration.md).
 struct alignas(64) RayCounts {
   static constexpr int max_depth = 64;
   std::array<std::array<std::uint64_t, max_depth + 1>, ray_kind_count> at{};
-  TraversalCounts traversal;  // what finding the hits of all these rays cost (lesson 05)
 
   void count(RayKind kind, int depth) { ++at[static_cast<int>(kind)][depth]; }
 
@@ -42,7 +40,6 @@ struct alignas(64) RayCounts {
   RayCounts& operator+=(const RayCounts& other) {
     for (int k = 0; k < ray_kind_count; ++k)
       for (int d = 0; d <= max_depth; ++d) at[k][d] += other.at[k][d];
-    traversal += other.traversal;
     return *this;
   }
 };

@@ -19,14 +19,14 @@ namespace {
     const vec3& l = shadow.direction;
     if (dot(n, l) <= 0) continue;  // light behind the surface: no shadow ray needed
     counts.count(RayKind::Shadow, depth);
-    if (!any_hit(world, shadow, &counts.traversal)) colour += phong(material, kd, n, l, to_eye, light.intensity);
+    if (!any_hit(world, shadow)) colour += phong(material, kd, n, l, to_eye, light.intensity);
   }
   for (const QuadLight& light : world.scene.area_lights) {
     const auto reaches = [&](const vec3& y) {  // S(x, y): does the shadow ray get to y?
       const Ray shadow = shadow_ray(hit.point, n, y, settings.epsilon);
       if (dot(n, shadow.direction) <= 0) return false;  // y is behind the surface
       counts.count(RayKind::Shadow, depth);
-      return !any_hit(world, shadow, &counts.traversal);
+      return !any_hit(world, shadow);
     };
     const auto point_light_at = [&](const vec3& y) {
       return phong(material, kd, n, normalize(y - hit.point), to_eye, light.intensity);
@@ -40,7 +40,7 @@ namespace {
 
 Color trace(const World& world, const Ray& ray, const TraceSettings& settings, RayCounts& counts, Rng& rng,
             int depth, const Color& contribution) {
-  const std::optional<Hit> hit = closest_hit(world, ray, &counts.traversal);
+  const std::optional<Hit> hit = closest_hit(world, ray);
   if (!hit) return world.scene.background;
 
   const Material& material = world.scene.materials[hit->material];
