@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
     if (resolution % 2) throw gi::OptionError("the hemicube resolution must be even");
     display.threads = common.threads;
     display.seed = common.seed;
+    display.white = 1 / exposure;  // anti-aliased edges on the light (display.hpp)
     const std::string& out = common.out;
 
     const gi::RadiosityScene scene = gi::cornell_box();

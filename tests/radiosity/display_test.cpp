@@ -19,6 +19,8 @@ TEST(Display, AUniformRoomShowsItsRadianceEverywhere) {
     settings.shading = shading;
     const gi::Image image = gi::render_radiosity(scene, mesh, B, inside, settings);
     for (const gi::Pixel& p : image.pixels) ASSERT_NEAR(p.y, 2.0 / gi::pi, 1e-5);
+    settings.white = 0.25;  // each sample clamped before the average
+    for (const gi::Pixel& p : gi::render_radiosity(scene, mesh, B, inside, settings).pixels) ASSERT_NEAR(p.y, 0.25, 1e-6);
   }
 }
 

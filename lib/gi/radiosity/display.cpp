@@ -48,17 +48,17 @@ Image render_radiosity(const FormFactorScene& scene, const Mesh& mesh, const std
         const auto hit = scene.first_hit(ray);
         if (!hit || !hit->front) continue;
         const Element& e = mesh.elements[hit->polygon];
-        if (settings.shading == Shading::Flat) {
-          sum += B[hit->polygon];
-          continue;
+        Color b = B[hit->polygon];
+        if (settings.shading == Shading::Smooth) {
+          const vec2 st = unbilinear(e.shape.corners, e.shape.normal, ray.at(hit->t));
+          const auto& v = e.vertices;
+          b = (1 - st.x) * (1 - st.y) * vertex_B[v[0]] + st.x * (1 - st.y) * vertex_B[v[1]] +
+              st.x * st.y * vertex_B[v[2]] + (1 - st.x) * st.y * vertex_B[v[3]];
         }
-        const auto hit_point = ray.at(hit->t);
-        const vec2 st = unbilinear(e.shape.corners, e.shape.normal, hit_point);
-        const auto& v = e.vertices;
-        sum += (1 - st.x) * (1 - st.y) * vertex_B[v[0]] + st.x * (1 - st.y) * vertex_B[v[1]] +
-               st.x * st.y * vertex_B[v[2]] + (1 - st.x) * st.y * vertex_B[v[3]];
+        const Color radiance = b / pi;  // L = B / pi
+        sum += settings.white > 0 ? glm::min(radiance, Color(settings.white)) : radiance;
       }
-      image.at(x, y) = Pixel(sum / (pi * n * n));  // radiance L = B / pi
+      image.at(x, y) = Pixel(sum / static_cast<double>(n * n));
     }
   });
   return image;

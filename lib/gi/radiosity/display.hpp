@@ -22,6 +22,11 @@ struct DisplaySettings {
   int height = 320;
   int samples = 2;  // n x n jittered eye rays per pixel, box-filtered
   Shading shading = Shading::Smooth;
+  // > 0: each eye ray's radiance is clamped to this before the pixel's samples are
+  // averaged. A light 20x brighter than what the picture shows as white otherwise
+  // turns every pixel one of its samples touches white, and its edges look ragged.
+  // Set it to the radiance the picture will show as white (1 / exposure).
+  double white = 0;
   int threads = 0;
   std::uint64_t seed = 1;
 };
