@@ -66,6 +66,21 @@ void expect_agreement(const gi::Scene& scene, const std::vector<Ray>& rays) {
 
 }  // namespace
 
+TEST(World, BruteForceFindsTheNearestOfAllPrimitiveKinds) {
+  gi::Scene scene;
+  const int m = scene.add(gi::Material{});
+  scene.add(gi::Sphere{{0, 0, -10}, 1, m});
+  scene.add(gi::Quad{{-1, -1, -5}, {2, 0, 0}, {0, 2, 0}, m});
+  scene.add(gi::Plane{{0, 0, -20}, {0, 0, 1}, m});
+  const gi::World world = gi::make_world(scene, Acceleration::BruteForce);
+  const auto hit = gi::closest_hit(world, gi::Ray{{0, 0, 0}, {0, 0, -1}});
+  ASSERT_TRUE(hit);
+  EXPECT_DOUBLE_EQ(hit->t, 5.0);  // the quad, though it was added after the sphere
+  EXPECT_TRUE(gi::any_hit(world, gi::Ray{{0, 0, 0}, {0, 0, -1}, 0, 6}));
+  EXPECT_FALSE(gi::any_hit(world, gi::Ray{{0, 0, 0}, {0, 0, -1}, 0, 4.9}));
+  EXPECT_FALSE(gi::closest_hit(world, gi::Ray{{0, 0, 0}, {0, 0, 1}}));
+}
+
 TEST(World, NamesRoundTripAndUnknownNamesListTheKnownOnes) {
   for (const Acceleration a : all) EXPECT_EQ(gi::acceleration_from_name(gi::name(a)), a);
   EXPECT_EQ(gi::acceleration_names(), (std::vector<std::string>{"brute-force", "bounding-boxes", "bvh"}));

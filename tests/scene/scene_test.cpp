@@ -3,23 +3,8 @@
 #include <stdexcept>
 
 #include "gi/scene/builtin_scenes.hpp"
-#include "gi/scene/scene_intersect.hpp"
 
 using gi::vec3;
-
-TEST(Scene, ClosestHitIsTheNearestOfAllPrimitiveKinds) {
-  gi::Scene scene;
-  const int m = scene.add(gi::Material{});
-  scene.add(gi::Sphere{{0, 0, -10}, 1, m});
-  scene.add(gi::Quad{{-1, -1, -5}, {2, 0, 0}, {0, 2, 0}, m});
-  scene.add(gi::Plane{{0, 0, -20}, {0, 0, 1}, m});
-  const auto hit = gi::closest_hit(scene, gi::Ray{{0, 0, 0}, {0, 0, -1}});
-  ASSERT_TRUE(hit);
-  EXPECT_DOUBLE_EQ(hit->t, 5.0);  // the quad, though it was added after the sphere
-  EXPECT_TRUE(gi::any_hit(scene, gi::Ray{{0, 0, 0}, {0, 0, -1}, 0, 6}));
-  EXPECT_FALSE(gi::any_hit(scene, gi::Ray{{0, 0, 0}, {0, 0, -1}, 0, 4.9}));
-  EXPECT_FALSE(gi::closest_hit(scene, gi::Ray{{0, 0, 0}, {0, 0, 1}}));
-}
 
 TEST(Scene, AddersRejectMissingMaterialsAndBadShapes) {
   gi::Scene scene;

@@ -13,7 +13,7 @@ namespace {
 // primitives only count when nearer.
 template <class Primitive>
 [[gnu::flatten]] void closest_in(const std::vector<Primitive>& primitives, Ray& ray, std::optional<Hit>& nearest,
-                TraversalCounts& counts) {
+                                  TraversalCounts& counts) {
   for (std::size_t i = 0; i < primitives.size(); ++i) {
     ++counts.primitive_tests;
     if (auto hit = intersect(ray, primitives[i])) {
@@ -37,8 +37,8 @@ template <class Primitive>
 // Flattened like the tree's traversal (bvh_traverse.cpp): a call per box test would
 // cost as much as the test.
 template <class Primitive>
-[[gnu::flatten]] void closest_in_boxes(const std::vector<Primitive>& primitives, const Aabb* boxes, Ray& ray, const vec3& inv_dir,
-                      std::optional<Hit>& nearest, TraversalCounts& counts) {
+[[gnu::flatten]] void closest_in_boxes(const std::vector<Primitive>& primitives, const Aabb* boxes, Ray& ray,
+                                        const vec3& inv_dir, std::optional<Hit>& nearest, TraversalCounts& counts) {
   for (std::size_t i = 0; i < primitives.size(); ++i) {
     ++counts.box_tests;
     if (!slab_test(ray, inv_dir, boxes[i])) continue;
@@ -52,8 +52,8 @@ template <class Primitive>
 }
 
 template <class Primitive>
-[[gnu::flatten]] bool any_in_boxes(const std::vector<Primitive>& primitives, const Aabb* boxes, const Ray& ray, const vec3& inv_dir,
-                  TraversalCounts& counts) {
+[[gnu::flatten]] bool any_in_boxes(const std::vector<Primitive>& primitives, const Aabb* boxes, const Ray& ray,
+                                    const vec3& inv_dir, TraversalCounts& counts) {
   for (std::size_t i = 0; i < primitives.size(); ++i) {
     ++counts.box_tests;
     if (!slab_test(ray, inv_dir, boxes[i])) continue;

@@ -36,7 +36,7 @@ struct World {
 World make_world(Scene scene, Acceleration acceleration = Acceleration::Bvh, const BvhSettings& settings = {});
 
 // The nearest hit with t in [ray.t_min, ray.t_max], or nothing: whatever the
-// acceleration, the hit brute force finds (scene_intersect.hpp), up to which of two
+// acceleration, the hit brute force finds, up to which of two
 // surfaces at exactly the same t is reported. `counts`, when given, is added to.
 std::optional<Hit> closest_hit(const World& world, Ray ray, TraversalCounts* counts = nullptr);
 
