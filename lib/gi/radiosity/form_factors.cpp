@@ -134,6 +134,8 @@ std::vector<double> form_factor_row(const FormFactorScene& scene, const Polygon&
 
 FormFactorMatrix form_factor_matrix(const FormFactorScene& scene, const FormFactorSettings& settings, int threads) {
   check(settings);
+  if (settings.method == FormFactorMethod::Hemicube)  // one set of weights, buffers reused per block of rows
+    return form_factor_matrix_hemicube(scene.polygons(), settings.hemicube_resolution, threads);
   const int n = static_cast<int>(scene.polygons().size());
   FormFactorMatrix F{n, std::vector<double>(static_cast<std::size_t>(n) * n)};
   parallel_for(n, threads, [&](int i) {
