@@ -41,10 +41,9 @@ std::vector<Method> methods() {
 gi::Image reference_image(const gi::World& world, gi::RenderSettings settings, int n, const std::string& out) {
   settings.sampling = {gi::Sampler::Jittered, n};
   settings.seed += 1000;  // independent of the jittered runs being measured
-  const std::string file = out + "/reference_" + world.scene.name + "_" + std::to_string(settings.width) + "x" +
-                           std::to_string(settings.height) + "_jittered" + std::to_string(n) + "_depth" +
-                           std::to_string(settings.trace.max_depth) + "_seed" + std::to_string(settings.seed) + ".pfm";
-  const gi::Image reference = gi::cached_reference(world, settings, file);
+  const gi::CachedImage cached = gi::cached_reference(world, settings, "built-in scene " + world.scene.name, out);
+  if (cached.from_cache) std::cout << "reference: read from the cache " << cached.file.string() << "\n\n";
+  const gi::Image& reference = cached.image;
   gi::write_png(reference, out + "/reference.png");
   return reference;
 }

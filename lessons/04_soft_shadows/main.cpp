@@ -2,6 +2,7 @@
 // rays. The penumbra grows with the light as similar triangles predict; the noise
 // falls with the number of shadow rays, faster when they are jittered.
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -89,11 +90,11 @@ int main(int argc, char** argv) {
     gi::RenderSettings reference_settings = settings;
     reference_settings.trace.soft_shadows = {gi::LightSampling::Jittered, reference_n};
     reference_settings.seed += 1000;  // independent of the runs being measured
-    const gi::Image reference = gi::cached_reference(
-        world, reference_settings,
-        out + "/reference_" + std::to_string(settings.width) + "x" + std::to_string(settings.height) + "_light" +
-            gi::format_number(light_size, 3, gi::Format::Fixed) + "_jittered" + std::to_string(reference_n) +
-            "_seed" + std::to_string(reference_settings.seed) + ".pfm");
+    char scene_key[64];
+    std::snprintf(scene_key, sizeof scene_key, "soft_shadow_scene, light size %.17g", light_size);
+    const gi::CachedImage cached = gi::cached_reference(world, reference_settings, scene_key, out);
+    if (cached.from_cache) std::cout << "reference: read from the cache " << cached.file.string() << "\n\n";
+    const gi::Image& reference = cached.image;
     gi::write_png(reference, out + "/reference.png");
 
     gi::Table table("Shadow rays per hit, light size " + gi::format_number(light_size, 2, gi::Format::Fixed) +
