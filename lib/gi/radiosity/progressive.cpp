@@ -45,6 +45,11 @@ std::vector<Color> with_ambient(const std::vector<double>& area, const std::vect
   return shown;
 }
 
+ShooterRow patch_shooter(const FormFactorScene& receivers, const Mesh& mesh, const FormFactorSettings& settings) {
+  check(settings);
+  return [&receivers, &mesh, settings](int p) { return form_factor_row(receivers, mesh.patches[p].shape, p, settings); };
+}
+
 SolverResult solve_progressive(const RadiositySystem& s, const Mesh& mesh, const ShooterRow& row,
                                const SolverOptions& options) {
   SolverMonitor monitor("progressive", s, options, true);
