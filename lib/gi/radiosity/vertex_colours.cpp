@@ -29,6 +29,8 @@ std::vector<Color> vertex_radiosity(const Mesh& mesh, const std::vector<Color>& 
 void write_ply(const Mesh& mesh, const std::vector<Color>& vertex_B, double exposure,
                const std::filesystem::path& file) {
   if (vertex_B.size() != mesh.vertices.size()) throw std::invalid_argument("PLY: one colour per vertex");
+  for (const Color& b : vertex_B)  // a garbage mesh is never written silently
+    if (!is_finite(b)) throw std::runtime_error("refusing to write " + file.string() + ": a vertex radiosity is NaN or infinite");
   const auto byte = [&](double b) {
     return static_cast<int>(std::lround(255 * srgb_encode(std::clamp(exposure * b / pi, 0.0, 1.0))));
   };
