@@ -66,9 +66,9 @@ Lesson::Lesson(std::string name, std::string summary, LessonFeatures features)
   add_common_options(options_, common_, name_, features.threads, features.seed);
 }
 
-void Lesson::add_image_size(int& width, int& height) {
-  options_.add("--width", width, "image width in pixels", min_image_size, max_image_size)
-      .add("--height", height, "image height in pixels", min_image_size, max_image_size);
+void Lesson::add_image_size(int& width, int& height, const std::string& what) {
+  options_.add("--width", width, what + " width in pixels", min_image_size, max_image_size)
+      .add("--height", height, what + " height in pixels", min_image_size, max_image_size);
 }
 
 void Lesson::add_check(std::function<void()> check) { checks_.push_back(std::move(check)); }

@@ -33,8 +33,8 @@ class Lesson {
 
   Options& options() { return options_; }
   // --width and --height in [min_image_size, max_image_size], the one range of
-  // every lesson that renders.
-  void add_image_size(int& width, int& height);
+  // every lesson that renders; `what` names the image in --help.
+  void add_image_size(int& width, int& height, const std::string& what = "image");
   // A check of the whole configuration (sizes that multiply, option combinations),
   // run after parsing and before any work: throw OptionError to refuse.
   void add_check(std::function<void()> check);
