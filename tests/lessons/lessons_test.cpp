@@ -1,44 +1,20 @@
 // The lessons as a user runs them: options, exit status, outputs, determinism.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <array>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
+
+#include "lesson_run.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-
-struct LessonRun {
-  int status;
-  std::string output;  // stdout and stderr together
-};
-
-LessonRun run(const std::string& lesson, const std::string& args) {
-  const std::string command = std::string(GI_BIN_DIR) + "/" + lesson + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer;
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-std::string out_dir(const std::string& name) { return std::string(GI_WORK_DIR) + "/out/" + name; }
-
-std::string bytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using gi_test::bytes;
+using gi_test::LessonRun;
+using gi_test::out_dir;
+using gi_test::run;
 
 // Every lesson, and the ones that render an image of a scene (which take --width,
 // --height and, but for 04, --scene).
@@ -47,10 +23,15 @@ const char* const lessons[] = {"01_rays",         "02_recursive",        "03_ant
                                "07_hemicube",     "08_radiosity_system", "09_jacobi_gauss_seidel",
                                "10_southwell",    "11_progressive",      "12_solver_showdown"};
 const char* const rendering[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows"};
+// Lessons offer --seed only if they draw random numbers, --threads only if they use threads.
+const char* const without_seed[] = {"01_rays", "02_recursive", "09_jacobi_gauss_seidel", "10_southwell"};
+const char* const without_threads[] = {"06_form_factors"};
 
-bool renders(const std::string& lesson) {
-  return std::find(std::begin(rendering), std::end(rendering), lesson) != std::end(rendering);
+template <std::size_t N>
+bool among(const char* const (&list)[N], const std::string& lesson) {
+  return std::find(std::begin(list), std::end(list), lesson) != std::end(list);
 }
+bool renders(const std::string& lesson) { return among(rendering, lesson); }
 
 }  // namespace
 
@@ -58,8 +39,9 @@ TEST(Lessons, HelpExitsZeroAndListsTheCommonOptions) {
   for (const char* lesson : lessons) {
     const LessonRun r = run(lesson, "--help");
     EXPECT_EQ(r.status, 0) << lesson;
-    for (const char* option : {"--out", "--threads", "--seed"})
-      EXPECT_NE(r.output.find(option), std::string::npos) << lesson << " --help does not mention " << option;
+    EXPECT_NE(r.output.find("--out"), std::string::npos) << lesson << " --help does not mention --out";
+    EXPECT_EQ(r.output.find("--seed") != std::string::npos, !among(without_seed, lesson)) << lesson << ": --seed";
+    EXPECT_EQ(r.output.find("--threads") != std::string::npos, !among(without_threads, lesson)) << lesson << ": --threads";
     if (!renders(lesson)) continue;
     for (const char* option : {"--width", "--height"})
       EXPECT_NE(r.output.find(option), std::string::npos) << lesson << " --help does not mention " << option;
@@ -71,8 +53,10 @@ TEST(Lessons, HelpExitsZeroAndListsTheCommonOptions) {
 
 TEST(Lessons, BadOptionsGiveOneLineAndStatusTwo) {
   for (const char* lesson : lessons) {
-    std::vector<std::string> bad = {"--bogus", "--threads x", "--threads -2", "--out", "--seed 1.5"};
-    if (renders(lesson)) bad.insert(bad.end(), {"--width -3", "--width", "--scene nowhere", "--height nan"});
+    std::vector<std::string> bad = {"--bogus", "--out", "--out ''", "--out --threads", "--out=-x"};
+    if (!among(without_threads, lesson)) bad.insert(bad.end(), {"--threads x", "--threads -2", "--threads 257"});
+    if (!among(without_seed, lesson)) bad.insert(bad.end(), {"--seed 1.5", "--seed -1", "--seed 18446744073709551616"});
+    if (renders(lesson)) bad.insert(bad.end(), {"--width -3", "--width", "--scene nowhere", "--height nan", "--width 15"});
     for (const std::string& args : bad) {
       const LessonRun r = run(lesson, args);
       EXPECT_EQ(r.status, 2) << lesson << " " << args;
@@ -80,13 +64,15 @@ TEST(Lessons, BadOptionsGiveOneLineAndStatusTwo) {
       EXPECT_EQ(r.output.rfind(std::string(lesson) + ": error: ", 0), 0u) << r.output;
     }
   }
+  EXPECT_FALSE(fs::exists("--threads")) << "'--out --threads' made a folder named --threads";
 }
 
 TEST(Lessons, RaysWritesItsTablesAndImages) {
   const LessonRun r = run("01_rays", "--width 64 --height 48 --out " + out_dir("01"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("origin inside"), std::string::npos);
-  for (const char* file : {"hit_or_miss.png", "normals.png", "depth.png", "ray_sphere.csv", "ray_plane.csv"})
+  for (const char* file : {"hit_or_miss.png", "hit_or_miss.pfm", "normals.png", "normals.pfm", "depth.png",
+                           "ray_sphere.csv", "ray_plane.csv", "outputs.json"})
     EXPECT_TRUE(fs::exists(out_dir("01") + "/" + file)) << file;
 }
 
@@ -139,6 +125,12 @@ TEST(Lessons, HemicubeWritesItsPicturesAndTables) {
                            "speed.csv"})
     EXPECT_TRUE(fs::exists(out_dir("07") + "/" + file)) << file;
   EXPECT_EQ(run("07_hemicube", "--resolution 21").status, 2) << "odd resolutions are refused";
+  // A picture resolution the table does not reach: the picture is still drawn.
+  fs::remove_all(out_dir("07b"));
+  const LessonRun other = run("07_hemicube", "--elements 40 --resolution 30 --max-resolution 20 --speed-elements 100 "
+                                             "--out " + out_dir("07b"));
+  ASSERT_EQ(other.status, 0) << other.output;
+  EXPECT_TRUE(fs::exists(out_dir("07b") + "/form_factor_matrix.png")) << "07 names a picture it did not draw";
 }
 
 TEST(Lessons, AccelerationTablesAndChart) {
@@ -148,6 +140,15 @@ TEST(Lessons, AccelerationTablesAndChart) {
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("BVH, SAH"), std::string::npos);
   EXPECT_EQ(r.output.find(" NO"), std::string::npos) << "an image differed between thread counts:\n" << r.output;
+  // --threads bounds the threads table.
+  const LessonRun one = run("05_acceleration", "--width 16 --height 16 --max-spheres 10 --room-quads 100 "
+                                               "--picture-scale 0.05 --threads 1 --out " + out_dir("05b"));
+  ASSERT_EQ(one.status, 0) << one.output;
+  std::size_t rows = 0;
+  for (std::size_t at = one.output.find("05 10 000 spheres"); at != std::string::npos;
+       at = one.output.find("05 10 000 spheres", at + 1))
+    ++rows;
+  EXPECT_EQ(rows, 1u) << "--threads 1: one row per picture\n" << one.output;
   for (const char* file : {"spheres.csv", "time_vs_n.svg", "quad_room.csv", "threads.csv"})
     EXPECT_TRUE(fs::exists(out_dir("05") + "/" + file)) << file;
 }
@@ -166,13 +167,15 @@ TEST(Lessons, RadiositySystemAndProgressiveRefinementDrawTheirPictures) {
   LessonRun r = run("08_radiosity_system", "--elements 60 --resolution 20 --width 32 --height 32 --out " + out_dir("08"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("Neumann"), std::string::npos);
-  for (const char* file : {"neumann_series.png", "matrix_K.png", "solution.png", "solution_flat.png", "cornell.ply"})
+  for (const char* file : {"neumann_series.png", "matrix_K.png", "solution.png", "solution.pfm", "solution_flat.png",
+                           "solution_flat.pfm", "neumann_0.pfm", "cornell.ply"})
     EXPECT_TRUE(fs::exists(out_dir("08") + "/" + file)) << file;
   r = run("11_progressive", "--patches 40 --resolution 20 --width 32 --height 32 --speed-elements 200 --out " +
                                 out_dir("11"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("1% unshot"), std::string::npos);
-  for (const char* file : {"snapshots.png", "snapshots_ambient.png", "progressive.csv", "progress.svg"})
+  for (const char* file : {"snapshots.png", "snapshots_ambient.png", "shots_24.pfm", "shots_100_ambient.pfm",
+                           "progressive.csv", "progress.svg"})
     EXPECT_TRUE(fs::exists(out_dir("11") + "/" + file)) << file;
 }
 
