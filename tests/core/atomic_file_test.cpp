@@ -11,7 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "../support/small_disk.hpp"
+#include "../support/files.hpp"
 
 namespace {
 
@@ -24,12 +24,6 @@ fs::path scratch(const std::string& name) {
   return folder;
 }
 
-std::string content(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 }  // namespace
 
@@ -38,7 +32,7 @@ TEST(AtomicFile, WritesTheWholeFileAndLeavesNoTemporary) {
   const std::uintmax_t size =
       gi::write_atomically(folder / "sub" / "a.txt", [](std::ostream& out) { out << "hello\n"; });
   EXPECT_EQ(size, 6u);
-  EXPECT_EQ(content(folder / "sub" / "a.txt"), "hello\n");
+  EXPECT_EQ(gi_test::file_text(folder / "sub" / "a.txt"), "hello\n");
   EXPECT_EQ(gi_test::files_in(folder / "sub"), std::vector<std::string>{"a.txt"});
 }
 
@@ -51,7 +45,7 @@ TEST(AtomicFile, AWriterThatFailsLeavesTheOldFileAsItWas) {
                                       throw std::runtime_error("the writer stopped");
                                     }),
                std::runtime_error);
-  EXPECT_EQ(content(folder / "a.txt"), "old");
+  EXPECT_EQ(gi_test::file_text(folder / "a.txt"), "old");
   EXPECT_EQ(gi_test::files_in(folder), std::vector<std::string>{"a.txt"}) << "the temporary must be removed";
 }
 
@@ -67,7 +61,7 @@ TEST(AtomicFile, AFullDiskIsAnErrorAndLeavesNothingBehind) {
     EXPECT_NE(std::string(e.what()).find("a.bin"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("No space left"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(content(disk.path() / "a.bin"), "old");
+  EXPECT_EQ(gi_test::file_text(disk.path() / "a.bin"), "old");
   EXPECT_EQ(gi_test::files_in(disk.path()), std::vector<std::string>{"a.bin"});
 }
 
@@ -97,7 +91,7 @@ TEST(AtomicFile, AProcessKilledMidwayLeavesOnlyATemporary) {
   int status = 0;
   ASSERT_EQ(waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
-  EXPECT_EQ(content(folder / "a.bin"), "old") << "a killed run must not replace the file";
+  EXPECT_EQ(gi_test::file_text(folder / "a.bin"), "old") << "a killed run must not replace the file";
   const std::vector<std::string> names = gi_test::files_in(folder);
   ASSERT_EQ(names.size(), 2u);
   for (const std::string& name : names)

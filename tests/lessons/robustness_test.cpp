@@ -12,7 +12,7 @@
 #include <thread>
 #include <vector>
 
-#include "../support/small_disk.hpp"
+#include "../support/files.hpp"
 #include "gi/core/atomic_file.hpp"
 #include "gi/image/image_io.hpp"
 #include "lesson_run.hpp"

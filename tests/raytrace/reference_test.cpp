@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/files.hpp"
 #include "gi/core/hash.hpp"
 #include "gi/image/image_io.hpp"
 #include "gi/scene/builtin_scenes.hpp"
@@ -35,12 +36,6 @@ struct Cache {
   fs::path key_file(const gi::CachedImage& c) const { return fs::path(c.file).replace_extension(".key"); }
 };
 
-std::string content(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 void overwrite(const fs::path& file, const std::string& bytes) { std::ofstream(file, std::ios::binary) << bytes; }
 
@@ -80,7 +75,7 @@ TEST(ReferenceCache, AFileMadeByOtherCodeIsNotTrusted) {
   const Cache cache("code");
   const gi::CachedImage first = cache.get();
   // What a student's earlier, buggy build left: the same settings, another fingerprint.
-  std::string key = content(cache.key_file(first));
+  std::string key = gi_test::file_text(cache.key_file(first));
   key.replace(key.find(gi::render_code_fingerprint()), 64, std::string(64, '0'));
   overwrite(cache.key_file(first), key);
   const gi::CachedImage again = cache.get();
@@ -92,7 +87,7 @@ TEST(ReferenceCache, AFileMadeByOtherCodeIsNotTrusted) {
 TEST(ReferenceCache, TruncatedDamagedAndHalfWrittenFilesAreRenderedAgain) {
   const Cache cache("damaged");
   const gi::CachedImage good = cache.get();
-  const std::string pfm = content(good.file), key = content(cache.key_file(good));
+  const std::string pfm = gi_test::file_text(good.file), key = gi_test::file_text(cache.key_file(good));
   const struct {
     const char* what;
     std::string pfm, key;
@@ -118,7 +113,7 @@ TEST(ReferenceCache, TruncatedDamagedAndHalfWrittenFilesAreRenderedAgain) {
     EXPECT_FALSE(again.from_cache) << c.what;
     EXPECT_NE(again.reason.find(c.reason), std::string::npos) << c.what << ": " << again.reason;
     EXPECT_EQ(again.image.pixels, good.image.pixels) << c.what;
-    EXPECT_EQ(content(good.file), pfm) << c.what << ": the image must be rewritten whole";
+    EXPECT_EQ(gi_test::file_text(good.file), pfm) << c.what << ": the image must be rewritten whole";
     EXPECT_TRUE(cache.get().from_cache) << c.what << ": the cache must be good again";
   }
 }
@@ -129,7 +124,7 @@ TEST(ReferenceCache, AValidPfmWithAForgedKeyOfAnotherSizeIsRefused) {
   // A 2 x 2 PFM with a key that matches this key and checksums it correctly.
   gi::Image tiny(2, 2, gi::Pixel(7.0f));
   gi::write_pfm(tiny, good.file);
-  const std::string bytes = content(good.file);
+  const std::string bytes = gi_test::file_text(good.file);
   overwrite(cache.key_file(good), gi::reference_key(cache.world, cache.settings, "whitted") + "pfm_bytes " +
                                       std::to_string(bytes.size()) + "\npfm_fnv1a " + gi::hex(gi::fnv1a(bytes)) + "\n");
   const gi::CachedImage again = cache.get();

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "../support/small_disk.hpp"
+#include "../support/files.hpp"
 #include "gi/core/atomic_file.hpp"
 #include "gi/core/not_implemented.hpp"
 #include "gi/image/image_io.hpp"
@@ -28,12 +28,6 @@ fs::path scratch(const std::string& name) {
   return folder;
 }
 
-std::string content(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 struct LessonRun {
   int status;
@@ -97,7 +91,7 @@ TEST(Lesson, RecordsEveryOutputInOrderAndWritesPfmBesideEachPicture) {
   EXPECT_EQ(r.out.rfind("a line of text\nSquares\n", 0), 0u) << r.out;
   for (const char* file : {"squares.csv", "render.png", "render.pfm", "heat.png", "chart.svg", "outputs.json"})
     EXPECT_TRUE(fs::exists(out / file)) << file;
-  const std::string json = content(out / "outputs.json");
+  const std::string json = gi_test::file_text(out / "outputs.json");
   const std::vector<std::string> in_order = {"\"status\": \"complete\"",  "\"kind\": \"text\"",
                                              "\"kind\": \"table\"",       "\"file\": \"squares.csv\"",
                                              "\"kind\": \"picture\"",     "\"linear\": \"render.pfm\"",
@@ -155,7 +149,7 @@ TEST(Lesson, ExitOneForFailuresWhileRunningAndThreeForExercises) {
   LessonRun r = run({"--out", out.string()}, [](gi::Lesson&) { throw std::runtime_error("the solver diverged"); });
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "01_x: error: the solver diverged\n");
-  EXPECT_NE(content(out / "outputs.json").find("\"status\": \"failed: the solver diverged\""), std::string::npos);
+  EXPECT_NE(gi_test::file_text(out / "outputs.json").find("\"status\": \"failed: the solver diverged\""), std::string::npos);
   r = run({"--out", out.string()}, [](gi::Lesson&) { throw gi::NotImplemented("exercise 5.2 BVH traversal"); });
   EXPECT_EQ(r.status, 3);
   EXPECT_NE(r.err.find("--accel brute-force"), std::string::npos) << r.err;
@@ -212,6 +206,6 @@ TEST(Lesson, AFullDiskIsExitOneAndLeavesNoHalfFile) {
   for (const std::string& name : gi_test::files_in(disk.path()))
     EXPECT_TRUE(name == "big.png" || name == "outputs.json") << "left behind: " << name;
   if (fs::exists(disk.path() / "outputs.json")) {
-    EXPECT_NE(content(disk.path() / "outputs.json").find("failed"), std::string::npos);
+    EXPECT_NE(gi_test::file_text(disk.path() / "outputs.json").find("failed"), std::string::npos);
   }
 }

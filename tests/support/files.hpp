@@ -1,18 +1,21 @@
 #pragma once
-// A file system of a few kilobytes mounted for one test: a full disk, or a read-only
-// one, made on purpose (a tmpfs; mount(2) needs root). Where it cannot be made,
-// mounted() is false and why_not() says why, for GTEST_SKIP.
+// Files for tests: a small disk made on purpose, and what a folder or a file holds.
 #include <sys/mount.h>
 
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace gi_test {
 
+// A file system of a few kilobytes mounted for one test: a full disk, or a read-only
+// one, made on purpose (a tmpfs; mount(2) needs root). Where it cannot be made,
+// mounted() is false and why_not() says why, for GTEST_SKIP.
 class SmallDisk {
  public:
   // `kilobytes` of space; read_only: nothing can be written at all.
@@ -54,6 +57,14 @@ inline std::vector<std::string> files_in(const std::filesystem::path& folder) {
   std::error_code ignored;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ignored)) names.push_back(entry.path().filename().string());
   return names;
+}
+
+// The whole file, as bytes.
+inline std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 }  // namespace gi_test
