@@ -46,6 +46,7 @@ gi::Image reference_image(const gi::World& world, gi::RenderSettings settings, i
   settings.seed += 1000;  // independent of the jittered runs being measured
   gi::CachedImage cached = gi::cached_reference(world, settings, "built-in scene " + world.scene.name, lesson.out());
   if (cached.from_cache) lesson.say("reference: read from the cache " + cached.file.string() + "\n");
+  else if (cached.reason != "no cached image") lesson.say("reference: rendered again, " + cached.reason + "\n");
   lesson.record(cached.file, gi::OutputKind::Cache, "the cached reference image, linear");
   lesson.picture(cached.image, "reference", "the reference: jittered " + std::to_string(n) + "x" + std::to_string(n),
                  view(world, settings));

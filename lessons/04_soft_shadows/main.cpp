@@ -95,6 +95,7 @@ int main(int argc, char** argv) {
     std::snprintf(scene_key, sizeof scene_key, "soft_shadow_scene, light size %.17g", light_size);
     const gi::CachedImage cached = gi::cached_reference(world, reference_settings, scene_key, lesson.out());
     if (cached.from_cache) lesson.say("reference: read from the cache " + cached.file.string() + "\n");
+    else if (cached.reason != "no cached image") lesson.say("reference: rendered again, " + cached.reason + "\n");
     lesson.record(cached.file, gi::OutputKind::Cache, "the cached reference image, linear");
     const gi::Image& reference = cached.image;
     lesson.picture(reference, "reference", "the reference: jittered " + std::to_string(reference_n) + "x" +

@@ -80,7 +80,8 @@ TEST(ReferenceCache, AFileMadeByOtherCodeIsNotTrusted) {
   overwrite(cache.key_file(first), key);
   const gi::CachedImage again = cache.get();
   EXPECT_FALSE(again.from_cache);
-  EXPECT_EQ(again.reason, "the cached image was made with other settings or code");
+  EXPECT_EQ(again.reason, "the cached image was made by other library code");
+  EXPECT_EQ(again.file, first.file) << "other code replaces the file rather than adding one";
   EXPECT_TRUE(cache.get().from_cache) << "rewritten, the cache is good again";
 }
 
@@ -101,6 +102,8 @@ TEST(ReferenceCache, TruncatedDamagedAndHalfWrittenFilesAreRenderedAgain) {
       {"key without its image", "", key, false, true, "wrong size"},
       {"truncated key", pfm, key.substr(0, key.find("pfm_fnv1a")), true, true, "damaged"},
       {"empty key", pfm, "", true, true, "other settings"},
+      {"key of other settings", pfm, key.substr(0, key.find("seed")) + "seed 7\n" + key.substr(key.find("pfm_")), true,
+       true, "other settings"},
       {"hostile key of 1 MB", pfm, key + std::string(1 << 20, 'x'), true, true, "too large"},
       {"big-endian header, same size", "PF\n24 18\n+1\n" + pfm.substr(12), key, true, true, "checksum"},
   };

@@ -48,7 +48,13 @@ std::string try_read(const fs::path& pfm, const fs::path& key_file, const std::s
   // The key file is small; one a hostile hand made large is refused unread.
   if (fs::file_size(key_file, error) > 1 << 16 || error) return "its key file is missing or too large";
   const std::string stored = whole_file(key_file);
-  if (stored.compare(0, key.size(), key) != 0) return "the cached image was made with other settings or code";
+  if (stored.compare(0, key.size(), key) != 0) {
+    // The first two lines are the format and the code; the rest are the settings.
+    const std::size_t code_end = key.find('\n', key.find('\n') + 1) + 1;
+    const bool same_settings = stored.size() > code_end && stored.compare(code_end, key.size() - code_end, key, code_end) == 0;
+    return same_settings ? "the cached image was made by other library code"
+                         : "the cached image was made with other settings";
+  }
   std::istringstream rest(stored.substr(key.size()));
   std::string size_word, sum_word, sum;
   std::uintmax_t size = 0;
@@ -64,11 +70,11 @@ std::string try_read(const fs::path& pfm, const fs::path& key_file, const std::s
   return image.width == width && image.height == height ? "" : "the cached image has the wrong size";
 }
 
-}  // namespace
-
-std::string reference_key(const World& world, const RenderSettings& s, const std::string& scene_key) {
+// Everything but the code: what names the file, so that a change of code replaces
+// the file instead of adding one.
+std::string settings_text(const World& world, const RenderSettings& s, const std::string& scene_key) {
   std::ostringstream key;
-  key << format_line << "\ncode " << render_code_fingerprint() << "\nscene " << scene_key
+  key << "scene " << scene_key
       << "\nacceleration " << name(world.acceleration) << "\nwidth " << s.width << "\nheight " << s.height
       << "\nmax_depth " << s.trace.max_depth << "\nmin_contribution " << exact(s.trace.min_contribution)
       << "\nepsilon " << exact(s.trace.epsilon) << "\nshadow_sampling "
@@ -79,10 +85,17 @@ std::string reference_key(const World& world, const RenderSettings& s, const std
   return key.str();
 }
 
+}  // namespace
+
+std::string reference_key(const World& world, const RenderSettings& settings, const std::string& scene_key) {
+  return std::string(format_line) + "\ncode " + render_code_fingerprint() + "\n" +
+         settings_text(world, settings, scene_key);
+}
+
 CachedImage cached_reference(const World& world, const RenderSettings& settings, const std::string& scene_key,
                              const fs::path& folder) {
   const std::string key = reference_key(world, settings, scene_key);
-  const std::string stem = "reference_" + hex(fnv1a(key));
+  const std::string stem = "reference_" + hex(fnv1a(settings_text(world, settings, scene_key)));
   CachedImage result;
   result.file = folder / (stem + ".pfm");
   const fs::path key_file = folder / (stem + ".key");
