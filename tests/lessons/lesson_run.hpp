@@ -1,5 +1,5 @@
 #pragma once
-// Running a lesson as a user does, and reading what it wrote.
+// Running a lesson as a user does, and checking what it wrote.
 #include <sys/wait.h>
 
 #include <array>
@@ -8,6 +8,10 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <gtest/gtest.h>
+
+#include "gi/image/image_io.hpp"
 
 namespace gi_test {
 
@@ -34,6 +38,24 @@ inline std::string bytes(const std::filesystem::path& file) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// Every picture in outputs.json has its PFM, of the PNG's size, and a stated camera;
+// there are `expected` of them, and the run completed.
+inline void check_pictures(const std::filesystem::path& folder, std::size_t expected) {
+  const std::string json = bytes(folder / "outputs.json");
+  ASSERT_NE(json.find("\"status\": \"complete\""), std::string::npos) << json;
+  std::size_t pictures = 0;
+  for (std::size_t at = json.find("\"kind\": \"picture\""); at != std::string::npos;
+       at = json.find("\"kind\": \"picture\"", at + 1), ++pictures) {
+    const std::size_t file = json.find("\"file\": \"", at) + 9, linear = json.find("\"linear\": \"", at) + 11;
+    const std::filesystem::path png = folder / json.substr(file, json.find('"', file) - file);
+    const std::filesystem::path pfm = folder / json.substr(linear, json.find('"', linear) - linear);
+    EXPECT_EQ(pfm.extension(), ".pfm");
+    EXPECT_TRUE(gi::read_pfm(pfm).same_size(gi::read_png(png))) << pfm;
+    EXPECT_LT(json.find("\"view\": {\"eye\": [", at), json.find("}}", at)) << "no camera for " << png;
+  }
+  EXPECT_EQ(pictures, expected) << json;
 }
 
 }  // namespace gi_test

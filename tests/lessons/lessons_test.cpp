@@ -12,6 +12,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using gi_test::bytes;
+using gi_test::check_pictures;
 using gi_test::LessonRun;
 using gi_test::out_dir;
 using gi_test::run;
@@ -74,6 +75,7 @@ TEST(Lessons, RaysWritesItsTablesAndImages) {
   for (const char* file : {"hit_or_miss.png", "hit_or_miss.pfm", "normals.png", "normals.pfm", "depth.png",
                            "ray_sphere.csv", "ray_plane.csv", "outputs.json"})
     EXPECT_TRUE(fs::exists(out_dir("01") + "/" + file)) << file;
+  check_pictures(out_dir("01"), 2);
 }
 
 TEST(Lessons, RecursiveSweepWritesImagesTablesAndChart) {
@@ -84,6 +86,7 @@ TEST(Lessons, RecursiveSweepWritesImagesTablesAndChart) {
   for (const char* file : {"depth_0.png", "depth_3.png", "reference.png", "diff_depth_1.png", "depth_limits.csv",
                            "thresholds.csv", "rays_per_depth.csv", "error_vs_time.svg"})
     EXPECT_TRUE(fs::exists(out_dir("02") + "/" + file)) << file;
+  check_pictures(out_dir("02"), 5);
 }
 
 TEST(Lessons, AntialiasingWritesTablesCropsHeatMapAndChart) {
@@ -94,6 +97,7 @@ TEST(Lessons, AntialiasingWritesTablesCropsHeatMapAndChart) {
   for (const char* file : {"centre.png", "jittered_4x4.png", "edge_crops.png", "adaptive_samples_heatmap.png",
                            "antialiasing.csv", "adaptive.csv", "error_vs_time.svg", "reference.png"})
     EXPECT_TRUE(fs::exists(out_dir("03") + "/" + file)) << file;
+  check_pictures(out_dir("03"), 6);
 }
 
 TEST(Lessons, SoftShadowsMeasuresThePenumbraAndWritesImages) {
@@ -104,6 +108,7 @@ TEST(Lessons, SoftShadowsMeasuresThePenumbraAndWritesImages) {
   for (const char* file : {"penumbra_by_light_size.png", "hard.png", "jittered_16.png", "shadow_crops.png",
                            "reference.png", "penumbra.csv", "shadow_rays.csv", "error_vs_time.svg"})
     EXPECT_TRUE(fs::exists(out_dir("04") + "/" + file)) << file;
+  check_pictures(out_dir("04"), 11);
 }
 
 TEST(Lessons, FormFactorsCompareEveryMethodWithTheClosedForms) {
@@ -162,6 +167,11 @@ TEST(Lessons, RadiositySystemAndProgressiveRefinementDrawTheirPictures) {
   for (const char* file : {"neumann_series.png", "matrix_K.png", "solution.png", "solution.pfm", "solution_flat.png",
                            "solution_flat.pfm", "neumann_0.pfm", "cornell.ply"})
     EXPECT_TRUE(fs::exists(out_dir("08") + "/" + file)) << file;
+  check_pictures(out_dir("08"), 8);
+  // Unclamped: the light in the PFM is far brighter than the white of the PNG (1 / 1.5).
+  float brightest = 0;
+  for (const gi::Pixel& p : gi::read_pfm(out_dir("08") + "/solution.pfm").pixels) brightest = std::max(brightest, p.y);
+  EXPECT_GT(brightest, 2.0f) << "the PFM is clamped like the PNG";
   r = run("11_progressive", "--patches 40 --resolution 20 --width 32 --height 32 --speed-elements 200 --out " +
                                 out_dir("11"));
   ASSERT_EQ(r.status, 0) << r.output;
@@ -169,6 +179,7 @@ TEST(Lessons, RadiositySystemAndProgressiveRefinementDrawTheirPictures) {
   for (const char* file : {"snapshots.png", "snapshots_ambient.png", "shots_24.pfm", "shots_100_ambient.pfm",
                            "progressive.csv", "progress.svg"})
     EXPECT_TRUE(fs::exists(out_dir("11") + "/" + file)) << file;
+  check_pictures(out_dir("11"), 8);
 }
 
 TEST(Lessons, SolverShowdownDetectsDivergence) {

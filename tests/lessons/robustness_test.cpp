@@ -47,52 +47,7 @@ int check_every_image(const fs::path& folder) {
   return images;
 }
 
-// Every picture in outputs.json has its PFM, which holds the same size as the PNG,
-// and a stated camera.
-void check_pictures(const fs::path& folder, std::size_t expected) {
-  const std::string json = bytes(folder / "outputs.json");
-  ASSERT_NE(json.find("\"status\": \"complete\""), std::string::npos) << json;
-  std::size_t pictures = 0;
-  for (std::size_t at = json.find("\"kind\": \"picture\""); at != std::string::npos;
-       at = json.find("\"kind\": \"picture\"", at + 1), ++pictures) {
-    const std::size_t file = json.find("\"file\": \"", at) + 9, linear = json.find("\"linear\": \"", at) + 11;
-    const fs::path png = folder / json.substr(file, json.find('"', file) - file);
-    const fs::path pfm = folder / json.substr(linear, json.find('"', linear) - linear);
-    EXPECT_EQ(pfm.extension(), ".pfm");
-    EXPECT_TRUE(gi::read_pfm(pfm).same_size(gi::read_png(png))) << pfm;
-    EXPECT_LT(json.find("\"view\": {\"eye\": [", at), json.find("}}", at)) << "no camera for " << png;
-  }
-  EXPECT_EQ(pictures, expected) << json;
-}
-
 }  // namespace
-
-TEST(LessonFaults, EveryRenderingLessonWritesAPfmAndCameraBesideEachPicture) {
-  const struct {
-    const char* lesson;
-    const char* args;
-    std::size_t pictures;
-  } cases[] = {
-      {"01_rays", "--width 32 --height 24", 2},
-      {"02_recursive", "--width 24 --height 16 --max-depth 2 --reference-depth 4 --repeat 1", 4},
-      {"03_antialiasing", "--width 32 --height 24 --depth 1 --reference-n 4", 6},
-      {"04_soft_shadows", "--width 24 --height 16 --reference-n 4", 11},
-      {"08_radiosity_system", "--elements 40 --resolution 20 --width 24 --height 16 --bounces 1", 5},
-      {"11_progressive", "--patches 30 --resolution 20 --width 24 --height 16 --speed-elements 100", 8},
-  };
-  for (const auto& c : cases) {
-    const std::string folder = out_dir(std::string("pfm_") + c.lesson);
-    fs::remove_all(folder);
-    const LessonRun r = run(c.lesson, std::string(c.args) + " --out " + folder);
-    ASSERT_EQ(r.status, 0) << c.lesson << r.output;
-    check_pictures(folder, c.pictures);
-  }
-  // Unclamped: the light in 08's PFM is far brighter than the white its PNG shows.
-  const gi::Image linear = gi::read_pfm(out_dir("pfm_08_radiosity_system") + "/solution.pfm");
-  float brightest = 0;
-  for (const gi::Pixel& p : linear.pixels) brightest = std::max(brightest, p.y);
-  EXPECT_GT(brightest, 1.0f / 1.5f * 2) << "the PFM is clamped like the PNG";
-}
 
 TEST(LessonFaults, AFullDiskIsExitOneWithOneLineAndNoHalfFile) {
   gi_test::SmallDisk disk(96);
