@@ -14,6 +14,15 @@ namespace gi {
 double form_factor_differential(const vec3& x_i, const vec3& n_i, const vec3& x_j, const vec3& n_j, double area_j,
                                 double visibility);
 
+// The same two points with the receiver taken as a disc of area A_j facing the
+// sender (Wallace, Elmquist and Haines 1989):
+//   F_ij ~ cos(theta_i) cos(theta_j) A_j / (pi r^2 + A_j) * H_ij
+// A_j / (pi r^2 + A_j) is the exact form factor from a point to a coaxial disc, so
+// the value agrees with the differential formula far away (to A_j / (pi r^2)) and
+// stays below 1 up close, where the plain formula grows without bound. 0 for r = 0.
+double form_factor_point_to_disc(const vec3& x_i, const vec3& n_i, const vec3& x_j, const vec3& n_j, double area_j,
+                                 double visibility);
+
 // The form factor from a differential area at x (unit normal n) to a polygon, by
 // Lambert's contour integral (exact, no occlusion):
 //   F = 1/(2 pi) sum over edges k of gamma_k  n . (R_k+1 x R_k) / |R_k+1 x R_k|
@@ -23,11 +32,15 @@ double form_factor_differential(const vec3& x_i, const vec3& n_i, const vec3& x_
 double contour_integral(const vec3& x, const vec3& n, const vec3* vertices, int count);
 
 // The same for any polygon: zero when x sees its back, the part below x's tangent
-// plane clipped away.
+// plane clipped away. Throws std::invalid_argument for a non-finite point or normal
+// and an invalid polygon (check).
 double form_factor_point_to_polygon(const vec3& x, const vec3& n, const Polygon& polygon);
 
-// Patch to patch: the point-to-polygon factor averaged over `from` with an
+// Patch to patch: the point-to-polygon factor averaged over `from` with a fixed
 // order x order Gauss-Legendre rule (order 1..16): F_ij = 1/A_i integral over A_i.
+// Fast and exact to 1e-10 for patches a size apart, but with no error estimate and
+// wrong by up to 1e-3 in the near field and at shared edges, where the integrand is
+// not smooth; the analytic method itself is form_factor_analytic_adaptive.
 double form_factor_analytic(const Polygon& from, const Polygon& to, int order);
 
 }  // namespace gi

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "gi/core/onb.hpp"
+#include "gi/radiosity/convex_polygon.hpp"
 
 namespace gi {
 
@@ -34,11 +35,11 @@ struct ClippedPolygon {
 
 // Sutherland-Hodgman against the plane q[axis] * sign >= near: keeps what lies in
 // front of the face, so that the division by the forward distance is safe.
-ClippedPolygon clip_near(const std::array<vec3, 4>& q, int axis, double sign, double near) {
+ClippedPolygon clip_near(const ClippedPolygon& q, int axis, double sign, double near) {
   ClippedPolygon out;
-  for (int i = 0; i < 4; ++i) {
-    const vec3& a = q[i];
-    const vec3& b = q[(i + 1) % 4];
+  for (int i = 0; i < q.n; ++i) {
+    const vec3& a = q.v[i];
+    const vec3& b = q.v[(i + 1) % q.n];
     const double da = sign * a[axis] - near, db = sign * b[axis] - near;
     if (da >= 0) out.v[out.n++] = a;
     if ((da >= 0) != (db >= 0)) out.v[out.n++] = a + (da / (da - db)) * (b - a);
@@ -46,8 +47,41 @@ ClippedPolygon clip_near(const std::array<vec3, 4>& q, int axis, double sign, do
   return out;
 }
 
-void rasterise(const ClippedPolygon& p, const vec3& plane_normal, double plane_offset, int item, const FaceView& view,
-               int resolution, int rows, double row_origin, std::vector<int>& items, std::vector<double>& depths) {
+// The edge function of a -> b at (x, y): twice the signed area of the triangle a, b,
+// (x, y). Computed with the endpoints in one fixed order, so that two polygons sharing
+// the edge (which they walk in opposite directions) get exactly opposite values: a
+// cell centre on the edge cannot round to "outside" for both and leave a crack.
+double edge_function(const vec2& a, const vec2& b, double x, double y) {
+  if (a.x < b.x || (a.x == b.x && a.y < b.y)) return (b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x);
+  return -((a.x - b.x) * (y - b.y) - (a.y - b.y) * (x - b.x));
+}
+
+// The area of the part of a projected polygon inside the face, [-1, 1] x [bottom,
+// top] (Sutherland-Hodgman against the face's four sides, then the shoelace formula).
+double area_on_face(const std::array<vec2, max_vertices>& s, int n, double bottom, double top) {
+  std::array<vec2, max_vertices + 4> in{}, out{};
+  std::copy(s.begin(), s.begin() + n, in.begin());
+  const double limit[4] = {-1, 1, bottom, top};
+  for (int side = 0; side < 4 && n > 0; ++side) {
+    const int axis = side / 2;
+    const double sign = side % 2 ? -1.0 : 1.0;  // keep sign * (coordinate - limit) >= 0
+    int m = 0;
+    for (int k = 0; k < n; ++k) {
+      const vec2 &a = in[k], &b = in[(k + 1) % n];
+      const double da = sign * (a[axis] - limit[side]), db = sign * (b[axis] - limit[side]);
+      if (da >= 0) out[m++] = a;
+      if ((da >= 0) != (db >= 0)) out[m++] = a + (da / (da - db)) * (b - a);
+    }
+    in = out, n = m;
+  }
+  double area2 = 0;
+  for (int k = 0; k < n; ++k) area2 += in[k].x * in[(k + 1) % n].y - in[(k + 1) % n].x * in[k].y;
+  return 0.5 * std::abs(area2);
+}
+
+// Rasterises one face's view of a clipped polygon; returns the cells its image covers.
+double rasterise(const ClippedPolygon& p, const vec3& plane_normal, double plane_offset, int item, const FaceView& view,
+                 int resolution, int rows, double row_origin, std::vector<int>& items, std::vector<double>& depths) {
   // Project onto the face: screen position (s, t) = (across, up) / forward.
   std::array<vec2, max_vertices> s;
   double area2 = 0;
@@ -56,10 +90,11 @@ void rasterise(const ClippedPolygon& p, const vec3& plane_normal, double plane_o
     s[k] = vec2(p.v[k][view.across_axis] / f, p.v[k][view.up_axis] / f);
   }
   for (int k = 0; k < p.n; ++k) area2 += s[k].x * s[(k + 1) % p.n].y - s[(k + 1) % p.n].x * s[k].y;
-  if (std::abs(area2) < 1e-300) return;
+  if (std::abs(area2) < 1e-300) return 0;
   const double orientation = area2 > 0 ? 1.0 : -1.0;
   // The cells whose centres may lie inside: the projected bounding box.
   const double cell = 2.0 / resolution;
+  const double covered = area_on_face(s, p.n, row_origin, row_origin + rows * cell) / (cell * cell);
   double lo_x = s[0].x, hi_x = s[0].x, lo_y = s[0].y, hi_y = s[0].y;
   for (int k = 1; k < p.n; ++k) {
     lo_x = std::min(lo_x, s[k].x), hi_x = std::max(hi_x, s[k].x);
@@ -80,11 +115,7 @@ void rasterise(const ClippedPolygon& p, const vec3& plane_normal, double plane_o
     for (int column = c0; column <= c1; ++column) {
       const double x = -1 + (column + 0.5) * cell;
       bool inside = true;
-      for (int k = 0; k < p.n && inside; ++k) {
-        const vec2& a = s[k];
-        const vec2& b = s[(k + 1) % p.n];
-        inside = orientation * ((b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x)) >= 0;
-      }
+      for (int k = 0; k < p.n && inside; ++k) inside = orientation * edge_function(s[k], s[(k + 1) % p.n], x, y) >= 0;
       if (!inside) continue;
       // Exact depth: where the cell's ray d = forward + x across + y up meets the
       // polygon's plane n.q = offset, measured along the face's axis.
@@ -100,6 +131,7 @@ void rasterise(const ClippedPolygon& p, const vec3& plane_normal, double plane_o
       }
     }
   }
+  return covered;
 }
 
 }  // namespace
@@ -112,33 +144,40 @@ void render_item_buffer(const std::vector<Polygon>& polygons, const vec3& centre
     buffer.items[f].assign(cells, -1);
     buffer.depths[f].assign(cells, std::numeric_limits<double>::infinity());
   }
+  buffer.footprint.assign(polygons.size(), 0.0);
   const Onb frame(normal);  // hemicube coordinates: x = frame.u, y = frame.v, z = normal
+  const auto local = [&](const vec3& r) { return vec3(dot(r, frame.u), dot(r, frame.v), dot(r, normal)); };
   for (int i = 0; i < static_cast<int>(polygons.size()); ++i) {
-    const Polygon& polygon = polygons[i];
-    std::array<vec3, 4> q;
-    double highest = 0, size = 0;
-    for (int k = 0; k < 4; ++k) {
-      const vec3 r = polygon.corners[k] - centre;
-      q[k] = vec3(dot(r, frame.u), dot(r, frame.v), dot(r, normal));
-      highest = std::max(highest, q[k].z);
-      size = std::max(size, length(r));
-    }
-    const double near = 1e-9 * size;
-    if (highest <= near) continue;  // behind the base plane or in it
-    const vec3 n(dot(polygon.normal, frame.u), dot(polygon.normal, frame.v), dot(polygon.normal, normal));
-    const double offset = dot(n, q[0]);  // the plane n.q = offset; the centre q = 0 is in front if offset < 0
-    const int item = offset < 0 ? i : -1;
-    for (int f = 0; f < hemicube_faces; ++f) {
-      const FaceView& view = views[f];
-      // Quick reject: nothing of the polygon in front of this face.
-      bool any = false;
-      for (int k = 0; k < 4 && !any; ++k) any = view.forward_sign * q[k][view.forward_axis] > near;
-      if (!any) continue;
-      const ClippedPolygon clipped = clip_near(q, view.forward_axis, view.forward_sign, near);
-      if (clipped.n < 3) continue;
-      const int rows = buffer.rows(HemicubeFace(f));
-      rasterise(clipped, n, offset, item, view, resolution, rows, f == 0 ? -1.0 : 0.0, buffer.items[f],
-                buffer.depths[f]);
+    // A twisted polygon is drawn as its two triangles: each has a plane to take depths
+    // from, and they are what the rays of the other methods hit.
+    const FlatPieces flat = flat_pieces(polygons[i]);
+    for (int piece = 0; piece < flat.count; ++piece) {
+      const ConvexPolygon& shape = flat.pieces[piece];
+      ClippedPolygon q;
+      double highest = 0, size = 0;
+      for (int k = 0; k < shape.count; ++k) {
+        q.v[q.n++] = local(shape.corners[k] - centre);
+        highest = std::max(highest, q.v[k].z);
+        size = std::max(size, length(shape.corners[k] - centre));
+      }
+      const double near = 1e-9 * size;
+      if (highest <= near) continue;  // behind the base plane or in it
+      const vec3 n = local(shape.normal);
+      const double offset = dot(n, q.v[0]);  // the plane n.q = offset; the centre q = 0 is in front if offset < 0
+      const int item = offset < 0 ? i : -1;
+      for (int f = 0; f < hemicube_faces; ++f) {
+        const FaceView& view = views[f];
+        // Quick reject: nothing of the polygon in front of this face.
+        bool any = false;
+        for (int k = 0; k < q.n && !any; ++k) any = view.forward_sign * q.v[k][view.forward_axis] > near;
+        if (!any) continue;
+        const ClippedPolygon clipped = clip_near(q, view.forward_axis, view.forward_sign, near);
+        if (clipped.n < 3) continue;
+        const int rows = buffer.rows(HemicubeFace(f));
+        const double cells = rasterise(clipped, n, offset, item, view, resolution, rows, f == 0 ? -1.0 : 0.0,
+                                       buffer.items[f], buffer.depths[f]);
+        if (item >= 0) buffer.footprint[i] += cells;
+      }
     }
   }
 }
