@@ -48,12 +48,19 @@ ConvexPolygon outline(const Polygon& polygon) {
   return p;
 }
 
+bool is_flat(const Polygon& polygon) {
+  const auto& c = polygon.corners;  // squared, to spare two square roots per polygon per hemicube
+  const double size2 = std::max(dot(c[2] - c[0], c[2] - c[0]), dot(c[3] - c[1], c[3] - c[1]));
+  for (const vec3& corner : c) {
+    const double off = dot(corner - polygon.centre, polygon.normal);
+    if (off * off > 1e-18 * size2) return false;
+  }
+  return true;
+}
+
 FlatPieces flat_pieces(const Polygon& polygon) {
+  if (is_flat(polygon)) return {{outline(polygon)}, 1};
   const auto& c = polygon.corners;
-  const double size = std::max(length(c[2] - c[0]), length(c[3] - c[1]));
-  double twist = 0;
-  for (const vec3& corner : c) twist = std::max(twist, std::abs(dot(corner - polygon.centre, polygon.normal)));
-  if (twist <= 1e-9 * size) return {{outline(polygon)}, 1};
   FlatPieces flat;
   flat.count = 2;
   for (int t = 0; t < 2; ++t) {  // (c0 c1 c2), then (c0 c2 c3)

@@ -17,8 +17,11 @@ struct ConvexPolygon {
 
 ConvexPolygon outline(const Polygon& polygon);
 
-// A polygon as the rays of FormFactorScene meet it: flat (every corner within 1e-9 of
-// its size from the plane through the centre), its outline; twisted, its two
+// Flat: every corner within 1e-9 of the polygon's size from the plane through its
+// centre (round-off); otherwise twisted.
+bool is_flat(const Polygon& polygon);
+
+// A polygon as the rays of FormFactorScene meet it: flat, its outline; twisted, its two
 // triangles (c0 c1 c2) and (c0 c2 c3), each flat, with its own normal. Methods that
 // need a plane -- a depth, a clip, a side -- use these pieces, so that a twisted
 // receiver is the same surface for the hemicube, the analytic method and the rays.
