@@ -53,6 +53,9 @@ void expect_refused(const gi::Polygon& bad, const std::string& words) {
   gi::ItemBuffer buffer;
   EXPECT_THROW(gi::form_factor_row_hemicube({unit_square(), bad}, unit_square(), gi::hemicube_weights(10), buffer),
                std::invalid_argument);
+  EXPECT_THROW(gi::render_item_buffer({unit_square(), bad}, {0.5, 0.5, 0}, {0, 0, 1}, 10, buffer),
+               std::invalid_argument);
+  EXPECT_THROW(gi::form_factor_matrix_hemicube({unit_square(), bad}, 10, 1), std::invalid_argument);
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ void check_all(const std::vector<Polygon>& polygons) {
 // The row of valid polygons (checked once by the caller).
 HemicubeRow row_of(const std::vector<Polygon>& polygons, const Polygon& from, const HemicubeWeights& weights,
                    ItemBuffer& buffer) {
-  render_item_buffer(polygons, lifted_centre(from), from.normal, weights.resolution, buffer);
+  render_checked_item_buffer(polygons, lifted_centre(from), from.normal, weights.resolution, buffer);
   HemicubeRow row{std::vector<double>(polygons.size(), 0.0)};
   for (int f = 0; f < hemicube_faces; ++f) {
     const std::vector<double>& delta = f == 0 ? weights.top : weights.side;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "gi/core/onb.hpp"
 #include "gi/radiosity/convex_polygon.hpp"
@@ -168,6 +170,20 @@ double rasterise(const ClippedPolygon& p, const vec3& plane_normal, double plane
 
 void render_item_buffer(const std::vector<Polygon>& polygons, const vec3& centre, const vec3& normal, int resolution,
                         ItemBuffer& buffer) {
+  for (std::size_t i = 0; i < polygons.size(); ++i) try {
+      check(polygons[i]);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("item buffer: polygon " + std::to_string(i) + ": " + e.what());
+    }
+  render_checked_item_buffer(polygons, centre, normal, resolution, buffer);
+}
+
+void render_checked_item_buffer(const std::vector<Polygon>& polygons, const vec3& centre, const vec3& normal,
+                                int resolution, ItemBuffer& buffer) {
+  if (resolution < 2 || resolution > 2000 || resolution % 2)
+    throw std::invalid_argument("item buffer: the resolution must be even and lie in [2, 2000]");
+  if (!is_finite(centre) || !is_finite(normal) || std::abs(length(normal) - 1) > 1e-6)
+    throw std::invalid_argument("item buffer: the hemicube's centre must be finite and its normal unit length");
   buffer.resolution = resolution;
   for (int f = 0; f < hemicube_faces; ++f) {
     const std::size_t cells = static_cast<std::size_t>(buffer.rows(HemicubeFace(f))) * resolution;

@@ -28,8 +28,15 @@ struct ItemBuffer {
 // behind the base plane, or in it within 1e-9 of their distance (the patch itself and
 // its coplanar neighbours), are left out: stand the hemicube on lifted_centre, so
 // that a twisted patch and its elements lie below it. Reuses `buffer`'s memory
-// between calls. The polygons must be valid (check); the caller checks them.
+// between calls. Throws std::invalid_argument for an invalid polygon (check), a
+// resolution that is not even in [2, 2000], or a centre or normal that is not finite
+// and unit.
 void render_item_buffer(const std::vector<Polygon>& polygons, const vec3& centre, const vec3& normal, int resolution,
                         ItemBuffer& buffer);
+
+// The same without checking the polygons, for callers that checked them once for many
+// hemicubes (a FormFactorScene, a matrix): checking is as slow as rendering small ones.
+void render_checked_item_buffer(const std::vector<Polygon>& polygons, const vec3& centre, const vec3& normal,
+                                int resolution, ItemBuffer& buffer);
 
 }  // namespace gi
