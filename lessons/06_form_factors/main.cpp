@@ -126,14 +126,7 @@ void every_method_every_case(const std::vector<Case>& list, const gi::FormFactor
 // One configuration per failure, each with an exact value: the relative error of every
 // method, the analytic method's own estimate of its error beside its true error, and
 // the old fixed Gauss rule over the sender (order 4) that the analytic method replaced.
-struct Failure {
-  std::string name;
-  std::vector<gi::Polygon> polygons;  // F from polygons[0] to polygons[1]
-  double exact;
-  std::string source;
-};
-
-std::vector<Failure> failures() {
+std::vector<Case> failures() {
   const vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
   return {
       {"near field: squares 1/20 apart", facing_squares(0.05), gi::ff_parallel_rectangles(1, 1, 0.05),
@@ -159,7 +152,7 @@ void where_each_method_fails(const gi::FormFactorSettings& base, const std::stri
                    {"Gauss 4x4", 2, gi::Format::Scientific}, {"analytic", 2, gi::Format::Scientific},
                    {"its estimate", 2, gi::Format::Scientific}, {"monte-carlo", 2, gi::Format::Scientific},
                    {"hemicube", 2, gi::Format::Scientific}, {"sub-cell?"}, {"exact from"}});
-  for (const Failure& f : failures()) {
+  for (const Case& f : failures()) {
     const gi::FormFactorScene scene(f.polygons);
     const auto error = [&](double value) { return std::abs(value - f.exact) / f.exact; };
     std::vector<gi::Cell> row{f.name, f.exact, error(evaluate(scene, with(FormFactorMethod::Differential, base)).first),
@@ -191,7 +184,7 @@ void near_field(const gi::FormFactorSettings& base, const std::string& out) {
     const double exact = gi::ff_parallel_rectangles(1, 1, d);
     std::vector<gi::Cell> row{d, exact};
     for (FormFactorMethod m : methods) row.push_back(std::abs(evaluate(scene, with(m, base)).first - exact) / exact);
-    // The lecture's formula itself, without the disc that keeps the method below 1.
+    // The lecture's formula itself, before the method scales rows that exceed 1.
     row.push_back(gi::form_factor_differential(squares[0].centre, squares[0].normal, squares[1].centre,
                                                squares[1].normal, squares[1].area, 1.0));
     table.add_row(row);

@@ -141,6 +141,8 @@ TEST(PolygonCheck, OverlappingPolygonsAreRefusedByName) {
     EXPECT_NE(what.find("overlap"), std::string::npos) << what;
   }
   EXPECT_NO_THROW(gi::FormFactorScene({square, beside, above})) << "an edge shared, or a gap of 1e-3, is fine";
+  const gi::Polygon hair = gi::make_polygon({vec3(0, 0, 1e-14), vec3(0, 1, 1e-14), vec3(1, 1, 1e-14), vec3(1, 0, 1e-14)});
+  EXPECT_THROW(gi::FormFactorScene({square, hair}), std::invalid_argument) << "1e-14 apart is coincident";
   // A mesh names the surfaces.
   const gi::Surface floor{"floor", square.corners, gi::Color(0.5)}, rug{"rug", half.corners, gi::Color(0.5)};
   const std::string what = message_of([&] { gi::make_mesh({floor, rug}, {1.0, 1}); });

@@ -21,14 +21,6 @@ double form_factor_differential(const vec3& x_i, const vec3& n_i, const vec3& x_
   // END EXERCISE 6.1
 }
 
-double form_factor_point_to_disc(const vec3& x_i, const vec3& n_i, const vec3& x_j, const vec3& n_j, double area_j,
-                                 double visibility) {
-  const double r2 = dot(x_j - x_i, x_j - x_i);
-  if (!(r2 > 0)) return 0;  // the same point: a polygon and itself
-  // The differential formula times pi r^2 / (pi r^2 + A_j): A_j / (pi r^2) becomes A_j / (pi r^2 + A_j).
-  return form_factor_differential(x_i, n_i, x_j, n_j, area_j, visibility) * (pi * r2 / (pi * r2 + area_j));
-}
-
 double contour_integral(const vec3& x, const vec3& n, const vec3* vertices, int count) {
   // BEGIN EXERCISE 6.2 the contour integral
   double sum = 0;

@@ -14,15 +14,6 @@ namespace gi {
 double form_factor_differential(const vec3& x_i, const vec3& n_i, const vec3& x_j, const vec3& n_j, double area_j,
                                 double visibility);
 
-// The same two points with the receiver taken as a disc of area A_j facing the
-// sender (Wallace, Elmquist and Haines 1989):
-//   F_ij ~ cos(theta_i) cos(theta_j) A_j / (pi r^2 + A_j) * H_ij
-// A_j / (pi r^2 + A_j) is the exact form factor from a point to a coaxial disc, so
-// the value agrees with the differential formula far away (to A_j / (pi r^2)) and
-// stays below 1 up close, where the plain formula grows without bound. 0 for r = 0.
-double form_factor_point_to_disc(const vec3& x_i, const vec3& n_i, const vec3& x_j, const vec3& n_j, double area_j,
-                                 double visibility);
-
 // The form factor from a differential area at x (unit normal n) to a polygon, by
 // Lambert's contour integral (exact, no occlusion):
 //   F = 1/(2 pi) sum over edges k of gamma_k  n . (R_k+1 x R_k) / |R_k+1 x R_k|

@@ -45,11 +45,19 @@ FormFactorRow row_differential(const FormFactorScene& scene, const Polygon& from
   // From lifted centre to lifted centre, a hair off the surfaces: no polygon's own
   // triangles lie in the way of the ray between them.
   const vec3 x_i = lifted_centre(from) + 1e-7 * size_of(from) * from.normal;
+  double sum = 0;
   for (std::size_t j = 0; j < to.size(); ++j) {
     const vec3 x_j = lifted_centre(to[j]) + 1e-7 * size_of(to[j]) * to[j].normal;
-    const double f = form_factor_point_to_disc(x_i, from.normal, x_j, to[j].normal, to[j].area, 1.0);
+    if (!(length(x_j - x_i) > 0)) continue;  // the sender itself: F_ii = 0, not 0 / 0
+    const double f = form_factor_differential(x_i, from.normal, x_j, to[j].normal, to[j].area, 1.0);
     row.F[j] = f > 0 && occlusion && !scene.visible(x_i, x_j) ? 0.0 : f;
+    sum += row.F[j];
   }
+  // The formula overestimates receivers that are close against their size, without
+  // bound (10.5 for unit squares 1/5 apart): a row that would send out more than all
+  // of the sender's energy is scaled to send out exactly all of it.
+  if (sum > 1)
+    for (double& f : row.F) f /= sum;
   return row;
 }
 

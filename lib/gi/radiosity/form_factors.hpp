@@ -12,9 +12,9 @@ namespace gi {
 
 // The lecture's ways to compute a row of form factors F_ij, from one polygon i (a
 // patch or an element) to every polygon j of the scene, behind one interface:
-//   Differential  the differential formula from centre to centre, the receiver taken
-//                 as a disc so that it stays below 1 up close (form_factor_point_to_disc),
-//                 times H_ij from a shadow ray between the centres
+//   Differential  the differential formula from centre to centre, times H_ij from a
+//                 shadow ray between the centres (form_factor_formulas.hpp); a row that
+//                 would sum to more than 1 (close receivers) is scaled to sum to 1
 //   Analytic      Lambert's contour integral, exact from a point, integrated over i
 //                 adaptively until the error estimate meets `tolerance`
 //                 (form_factor_analytic_adaptive): exact without occlusion, blind to it

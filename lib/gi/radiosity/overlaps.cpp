@@ -25,7 +25,7 @@ bool boxes_meet(const Aabb& a, const Aabb& b) {
 }  // namespace
 
 double shared_area(const Polygon& a, const Polygon& b) {
-  const double tolerance = 1e-9 * std::max(size_of(a), size_of(b));
+  const double tolerance = 1e-12 * std::max(size_of(a), size_of(b));
   if (!within_plane(a, b, tolerance) || !within_plane(b, a, tolerance)) return 0;
   return overlap_area(outline(a), outline(b));
 }
@@ -39,7 +39,7 @@ std::optional<std::pair<int, int>> find_overlap(const std::vector<Polygon>& poly
     // The polygon's box, grown by the coplanarity tolerance (a flat box has no depth).
     Aabb box;
     for (const vec3& c : polygons[i].corners) grow(box, c);
-    const vec3 margin(1e-9 * size_of(polygons[i]));
+    const vec3 margin(1e-12 * size_of(polygons[i]));
     box.lo -= margin, box.hi += margin;
     stack.assign(1, 0);
     while (!stack.empty()) {  // every leaf whose box meets this one

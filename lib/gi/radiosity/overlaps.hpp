@@ -8,13 +8,14 @@
 
 namespace gi {
 
-// Two polygons that lie in one plane (every corner of each within 1e-9 of the larger
-// one's size from the other's plane -- the hemicube's near plane -- facing the same
-// way or back to back) and share area: the area they share. 0 for any other pair,
-// polygons meeting along an edge included. Coincident polygons make every method
-// ambiguous -- which of them does a ray hit, which wins a z-buffer tie? -- so scenes
-// refuse them. Polygons farther apart are fine, but a gap under 1e-7 of the sender's
-// size is below the hair Monte Carlo's rays start above it: they miss what is there.
+// Two polygons that lie in one plane (every corner of each within 1e-12 of the larger
+// one's size from the other's plane, facing the same way or back to back) and share
+// area: the area they share. 0 for any other pair, polygons meeting along an edge
+// included. Coincident polygons make every method ambiguous -- which of them does a
+// ray hit, which wins a z-buffer tie? -- so scenes refuse them. Polygons farther apart
+// are taken, and every method gives finite form factors for them, but gaps this small
+// are below what the methods resolve: Monte Carlo's rays start 1e-7 of the sender's
+// size above it, and the hemicube leaves out what lies within 1e-9 of its base.
 double shared_area(const Polygon& a, const Polygon& b);
 
 // True when shared_area is more than 1e-6 of the smaller polygon's area.
