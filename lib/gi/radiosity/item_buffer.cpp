@@ -36,7 +36,9 @@ struct ClippedPolygon {
 };
 
 // Sutherland-Hodgman against the plane q[axis] * sign >= near: keeps what lies in
-// front of the face, so that the division by the forward distance is safe.
+// front of the face, so that the division by the forward distance is safe. The cut is
+// always computed from the edge's end in front, so that two polygons sharing the edge
+// (walking it in opposite directions) get the very same point.
 ClippedPolygon clip_near(const ClippedPolygon& q, int axis, double sign, double near) {
   ClippedPolygon out;
   for (int i = 0; i < q.n; ++i) {
@@ -44,7 +46,8 @@ ClippedPolygon clip_near(const ClippedPolygon& q, int axis, double sign, double 
     const vec3& b = q.v[(i + 1) % q.n];
     const double da = sign * a[axis] - near, db = sign * b[axis] - near;
     if (da >= 0) out.v[out.n++] = a;
-    if ((da >= 0) != (db >= 0)) out.v[out.n++] = a + (da / (da - db)) * (b - a);
+    if ((da >= 0) != (db >= 0))
+      out.v[out.n++] = da >= 0 ? a + (da / (da - db)) * (b - a) : b + (db / (db - da)) * (a - b);
   }
   return out;
 }
@@ -128,12 +131,14 @@ double rasterise(const ClippedPolygon& p, const vec3& plane_normal, double plane
   std::array<EdgeFunction, max_vertices> edges;
   for (int k = 0; k < p.n; ++k) edges[k] = edge_function(s[k], s[(k + 1) % p.n]);
   // Clamped before the conversion: a polygon reaching close to the face's plane
-  // projects to enormous coordinates that no int can hold.
+  // projects to enormous coordinates that no int can hold. Widened by a hair: a cell
+  // centre on the box's border (on an edge shared with a neighbour) must reach the
+  // edge test, which alone decides, consistently, which of the two takes it.
   const auto first = [&](double lo, double origin, int cells) {
-    return static_cast<int>(std::clamp(std::ceil((lo - origin) / cell - 0.5), 0.0, double(cells)));
+    return static_cast<int>(std::clamp(std::ceil((lo - origin) / cell - 0.5 - 1e-9), 0.0, double(cells)));
   };
   const auto last = [&](double hi, double origin, int cells) {
-    return static_cast<int>(std::clamp(std::floor((hi - origin) / cell - 0.5), -1.0, double(cells - 1)));
+    return static_cast<int>(std::clamp(std::floor((hi - origin) / cell - 0.5 + 1e-9), -1.0, double(cells - 1)));
   };
   const int c0 = first(lo_x, -1, resolution), c1 = last(hi_x, -1, resolution);
   const int r0 = first(lo_y, row_origin, rows), r1 = last(hi_y, row_origin, rows);
