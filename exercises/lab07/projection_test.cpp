@@ -45,6 +45,15 @@ TEST(Ex7_3_Projection, TopCellIndices) {
   expect_cell({1, -0.5, 2}, 8, HemicubeFace::Top, 6, 3, "divide by z to reach the plane z = 1, then map [-1, 1] to cells");
 }
 
+TEST(Ex7_3_Projection, CellsAreCountedNotRounded) {
+  // Top: (x, y) / z = (0.3, -0.55): column (0.3 + 1) / 2 * 10 = 6.5, row 2.25.
+  expect_cell({0.3, -0.55, 1}, 10, HemicubeFace::Top, 6, 2,
+              "a point 6.5 cells from the edge lies in cell 6: truncate towards the edge, do not round");
+  // On x = 1: (y, z) / x = (-0.45, 0.35): column 2.75, row 1.75.
+  expect_cell({2, -0.9, 0.7}, 10, HemicubeFace::PlusX, 2, 1,
+              "a point 2.75 cells across lies in cell 2: truncate towards the edge, do not round");
+}
+
 TEST(Ex7_3_Projection, SideCellIndices) {
   // On the face x = 1: (y, z) / x = (-0.5, 0.5): column 25 of 100, row 25 of 50.
   expect_cell({2, -1, 1}, 100, HemicubeFace::PlusX, 25, 25,

@@ -44,3 +44,10 @@ TEST(Ex11_3_Shooter, TheLargestWherever) {
   EXPECT_EQ(gi::choose_shooter(patches, area, {Color(3.0), Color(0.1), Color(0.2), Color(1.0)}), 0)
       << "here patch 0 holds the most unshot power";
 }
+
+TEST(Ex11_3_Shooter, TheFirstOnATie) {
+  const std::vector<gi::Patch> patches = {patch(0, 1, 1.0), patch(1, 1, 1.0), patch(2, 1, 1.0)};
+  EXPECT_EQ(gi::choose_shooter(patches, {1.0, 1.0, 1.0}, {Color(0.2), Color(0.5), Color(0.5)}), 1)
+      << "patches 1 and 2 hold the same unshot power: take the first (replace the best only when strictly larger)";
+}
+

@@ -160,6 +160,10 @@ class GradedTests(unittest.TestCase):
                 self.assertRegex(handout, rf"\| {re.escape(exercise)} \| .* \| {count} \|",
                                  f"lab {lab}: the handout's table gives {exercise} another number of points")
             self.assertIn(f"`score: X/{sum(counts.values())}`", handout, f"lab {lab}: the handout's total is wrong")
+            hidden = sum(1 for _, h in grade.source_tests(ROOT, lab) if h)
+            count = f"{sum(counts.values())}" + (f" (+{hidden})" if hidden else "")
+            self.assertRegex((ROOT / "exercises" / "README.md").read_text(), rf"\| {lab} \| \[lab{lab:02d}/.* \| {re.escape(count)} \|",
+                             f"exercises/README.md: lab {lab} has {count} graded tests")
             self.assertIn(f"--target lab{lab:02d}_graded\n    exercises/grade --labs {lab}\n", handout,
                           f"lab {lab}: the handout must give the two commands to build and grade the lab")
 

@@ -9,15 +9,12 @@
 #include "gi/geometry/plane.hpp"
 #include "gi/geometry/sphere.hpp"
 #include "support/print.hpp"
+#include "support/random.hpp"
 
 using gi::Ray;
 using gi::vec3;
 
-namespace {
-vec3 random_vector(gi::Rng& rng, double scale) {
-  return scale * vec3(2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1);
-}
-}  // namespace
+using support::random_vector;
 
 TEST(Ex1_1_RandomRays, HitOrMissAsTheGeometrySays) {
   // A ray segment [t_min, t_max] meets the sphere iff its point nearest the centre is

@@ -8,15 +8,12 @@
 #include "gi/accel/world.hpp"
 #include "gi/core/rng.hpp"
 #include "support/print.hpp"
+#include "support/random.hpp"
 
 using gi::Ray;
 using gi::vec3;
 
-namespace {
-vec3 random_vector(gi::Rng& rng, double scale) {
-  return scale * vec3(2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1);
-}
-}  // namespace
+using support::random_vector;
 
 TEST(Ex5_1_RandomBoxes, AgreesWithPointsAlongTheRay) {
   // Whether a ray's segment meets a box, and where it enters, from 20 001 points along
