@@ -3,7 +3,7 @@
 // depend on your lab 1 code. The traversal calls your slab test (exercise 5.1); the
 // scenes use tilted squares (boxes with some thickness) and rays along +z where they
 // can, so that most slips in 5.1 cost points there only. A test that needs more of
-// the slab test checks that first and says so.
+// the slab test checks that first and says so (slab_probe.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include "gi/accel/world.hpp"
 #include "gi/core/rng.hpp"
 #include "gi/scene/benchmark_scenes.hpp"
+#include "slab_probe.hpp"
 #include "support/print.hpp"
 
 using gi::Quad;
@@ -42,34 +43,6 @@ Quad square(double z, double size = 2) {
 
 const gi::BvhSettings one_per_leaf{1, 12, gi::Split::Sah};
 const Ray up_the_z_axis{{0, 0, 0}, {0, 0, 1}};
-
-// What the traversal needs of exercise 5.1, as a message ("" when all is well).
-// `level`: 0 rays along +z into a box ahead; 1 also the distance where the ray enters
-// (by which children are ordered and skipped); 2 also rays with negative components;
-// 3 also flat boxes (those of axis-aligned quads).
-std::string slab_test_problem(int level) {
-  const gi::Aabb box{{1, 1, 1}, {3, 2, 4}};
-  const auto slab = [](const Ray& r, const gi::Aabb& b) { return gi::slab_test(r, 1.0 / r.direction, b); };
-  const std::string fix = " -- closest_hit relies on your slab test (exercise 5.1): make its tests pass first";
-  if (!slab(Ray{{2, 1.5, -3}, {0, 0, 1}}, box)) return "your slab test misses a box straight ahead" + fix;
-  if (slab(Ray{{5, 1.5, -3}, {0, 0, 1}}, box)) return "your slab test hits a box beside the ray" + fix;
-  if (level >= 1) {
-    const auto t = slab(Ray{{2, 1.5, -3}, {0, 0, 1}}, box);
-    if (!t || std::abs(*t - 4) > 1e-12) return "your slab test gives the wrong distance to a box ahead" + fix;
-  }
-  if (level >= 2 && !slab(Ray{{2, 1.5, 9}, {0, 0, -1}}, box))
-    return "your slab test misses a box ahead of a ray going towards -z" + fix;
-  if (level >= 3 && !slab(Ray{{1, 3, 1}, {0, -1, 0}}, gi::Aabb{{0, 0, 0}, {2, 0, 2}}))
-    return "your slab test misses a flat box (the box of an axis-aligned quad)" + fix;
-  return "";
-}
-
-// Stops a test whose scene needs more of the slab test than yours gives, saying so.
-#define NEEDS_SLAB_TEST(level)                          \
-  do {                                                  \
-    const std::string problem = slab_test_problem(level); \
-    ASSERT_TRUE(problem.empty()) << problem;            \
-  } while (false)
 
 // 1000 squares one above the other at z = 1, 2, ..., 1000, one per leaf.
 gi::World stack_of_squares() {

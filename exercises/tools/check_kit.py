@@ -11,6 +11,7 @@ answer from none); the kit has the tree's visible graded tests; the kit's own ct
 passes (a test reaching a stub is reported as skipped, never as failed); and the
 `lessons` target runs every lesson, not stopping at the first that reaches a stub.
 """
+import re
 import shutil
 import subprocess
 import sys
@@ -65,7 +66,7 @@ def main(argv):
                             + "; ".join(other[:5]))
         run(["ctest", "--test-dir", str(kit_build), "-j", "2", "--timeout", "300"], problems, "the kit's ctest")
         lessons = run(["cmake", "--build", str(kit_build), "--target", "lessons"], problems, "the kit's lessons target")
-        ran = lessons.stdout.count("== ")
+        ran = len(re.findall(r"^== \d\d_\w+ ==$", lessons.stdout + lessons.stderr, re.M))  # one line per lesson
         expected = len(list((kit_dir / "lessons").glob("[0-9][0-9]_*/main.cpp")))
         if ran < expected:
             problems.append(f"the lessons target ran {ran} of {expected} lessons")

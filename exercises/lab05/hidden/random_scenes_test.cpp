@@ -7,6 +7,7 @@
 
 #include "gi/accel/world.hpp"
 #include "gi/core/rng.hpp"
+#include "../slab_probe.hpp"
 #include "support/print.hpp"
 #include "support/random.hpp"
 
@@ -45,6 +46,7 @@ TEST(Ex5_1_RandomBoxes, AgreesWithPointsAlongTheRay) {
 }
 
 TEST(Ex5_2_RandomScenes, AgreesWithBruteForce) {
+  NEEDS_SLAB_TEST(3);
   gi::Rng rng(606);
   for (int scene_number = 0; scene_number < 4; ++scene_number) {
     gi::Scene scene;
