@@ -4,13 +4,14 @@ Pass or fail comes from gtest's own JSON report (--gtest_output=json) and from i
 premature-exit file (TEST_PREMATURE_EXIT_FILE, which gtest deletes only when
 RUN_ALL_TESTS returns), never from the text a test prints: code under test can
 print "[  PASSED  ]" and exit 0, but it cannot make gtest record a pass. Every run
-has a time limit that kills the program's whole process group, and its output is
-kept on disk, not in a pipe, so a test that prints gigabytes or leaves a child
-behind cannot stall the grader.
+has a time limit that kills the program's whole process group, and its output goes
+to a file, not a pipe, so a child left behind cannot stall the grader; the file may
+grow to 64 MB (RLIMIT_FSIZE), so a test that prints without end cannot fill the disk.
 """
 import json
 import os
 import re
+import resource
 import signal
 import subprocess
 import tempfile
@@ -18,6 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 KEEP_OUTPUT = 16384  # characters of a program's output kept for messages
+MAX_FILE = 64 << 20  # bytes any file the program writes may reach
 
 
 @dataclass
@@ -44,12 +46,16 @@ def clean_env(extra):
     return env
 
 
+def limit_file_size():
+    resource.setrlimit(resource.RLIMIT_FSIZE, (MAX_FILE, MAX_FILE))
+
+
 def run_program(argv, timeout, env=None, cwd=None):
     """(return code or None on timeout, output tail). The program gets no stdin."""
     with tempfile.TemporaryFile() as out:
         try:
             process = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.STDOUT,
-                                       env=env, cwd=cwd, start_new_session=True)
+                                       env=env, cwd=cwd, start_new_session=True, preexec_fn=limit_file_size)
         except OSError as e:
             return 127, f"cannot start {argv[0]}: {e.strerror}"
         try:
@@ -80,7 +86,8 @@ def describe_exit(code):
                    "SIGABRT": "abort: a failed assert, or an exception nothing caught",
                    "SIGFPE": "arithmetic fault: an integer divided by zero?",
                    "SIGKILL": "killed: out of memory?",
-                   "SIGBUS": "bus error: a bad pointer?"}.get(name)
+                   "SIGBUS": "bus error: a bad pointer?",
+                   "SIGXFSZ": "output past 64 MB: printing without end?"}.get(name)
         return f"killed by {name}" + (f" ({meaning})" if meaning else "")
     return f"exit status {code}"
 

@@ -58,6 +58,10 @@ for name in wanted:
     elif what == "fake-pass":
         print("[  PASSED  ] 1 test.", flush=True)
         sys.exit(0)
+    elif what == "flood":
+        signal.signal(signal.SIGXFSZ, signal.SIG_DFL)  # as in a C++ program (Python ignores it)
+        while True:
+            sys.stdout.write("x" * 65536)
     elif what == "child":
         subprocess.Popen(["sleep", "600"])
         results[name] = []
@@ -163,6 +167,12 @@ class FakePrograms(unittest.TestCase):
         tests = {"Ex99_1_A.Bytes": "bytes", "Ex99_1_A.Good": "pass"}
         found, _ = results_of(fake_program(self.folder, tests), tests)
         self.assertEqual(found["Ex99_1_A.Bytes"].hint, "bad bytes above")
+        self.assertTrue(found["Ex99_1_A.Good"].passed)
+
+    def test_endless_output_is_cut_off(self):
+        tests = {"Ex99_1_A.Flood": "flood", "Ex99_1_A.Good": "pass"}
+        found, _ = results_of(fake_program(self.folder, tests), tests, limit=60)
+        self.assertIn("SIGXFSZ", found["Ex99_1_A.Flood"].hint)
         self.assertTrue(found["Ex99_1_A.Good"].passed)
 
     def test_a_child_left_running_does_not_stall_the_grader(self):
