@@ -7,6 +7,7 @@ import unittest
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import build     # noqa: E402
 import excerpts  # noqa: E402
 import grade     # noqa: E402
 import mutants   # noqa: E402
@@ -74,6 +75,33 @@ class Excerpts(unittest.TestCase):
         root = self.make_tree("x\n")
         (root / "docs" / "page.md").write_text("<!-- excerpt: lib/a.cpp | int nothing( -->\n```cpp\n```\n")
         self.assertIn("no line starts with", excerpts.process(root, fix=False)[0])
+
+
+class BuildErrors(unittest.TestCase):
+    def tree(self):
+        root = Path(tempfile.mkdtemp())
+        (root / "lib").mkdir()
+        (root / "lib" / "a.cpp").write_text(SOURCE)
+        (root / "lib" / "b.cpp").write_text("int b() { return 1; }\n")
+        return root
+
+    def test_compile_errors_name_the_region_they_fall_in(self):
+        root = self.tree()
+        log = (f"[1/3] Building CXX object a.o\nFAILED: a.o\n{root}/lib/a.cpp:4:30: error: expected ';' before 'return'\n"
+               f"{root}/lib/a.cpp:9:1: error: expected '}}' at end of input\n")
+        self.assertEqual(build.broken_regions(root, log), {"3.1": "lib/a.cpp:4: error: expected ';' before 'return'"})
+        self.assertEqual(build.first_error(log), f"{root}/lib/a.cpp:4:30: error: expected ';' before 'return'")
+
+    def test_errors_outside_any_region_stub_none(self):
+        root = self.tree()
+        self.assertEqual(build.broken_regions(root, f"{root}/lib/b.cpp:1:5: error: nope\n"), {})
+        self.assertEqual(build.first_error("x.o: in function `f':\nx.cpp:(.text+0x5): undefined reference to `g'\n"),
+                         "x.cpp:(.text+0x5): undefined reference to `g'")
+
+    def test_restub_puts_the_stub_back(self):
+        root = self.tree()
+        build.restub(root, {"3.1"})
+        self.assertIn('throw gi::NotImplemented("exercise 3.1 doubling");', (root / "lib" / "a.cpp").read_text())
 
 
 class Mutants(unittest.TestCase):
