@@ -36,20 +36,22 @@ TEST(Ex1_1_RandomRays, HitOrMissAsTheGeometrySays) {
         std::abs(d_max - sphere.radius) < 1e-6)
       continue;
     const auto hit = gi::intersect(ray, sphere);
-    ASSERT_EQ(hit.has_value(), meets) << "ray " << k << ": " << testing::PrintToString(ray) << " against the sphere at "
-                                      << testing::PrintToString(sphere.center) << " of radius " << sphere.radius
-                                      << (meets ? " crosses its surface within [t_min, t_max]"
-                                                : " does not cross its surface within [t_min, t_max]");
+    ASSERT_EQ(hit.has_value(), meets)
+        << (meets ? "a miss, but this ray crosses the sphere's surface within [t_min, t_max]"
+                  : "a hit, but this ray does not cross the sphere's surface within [t_min, t_max]")
+        << " (random ray " << k << ": " << testing::PrintToString(ray) << ", sphere at "
+        << testing::PrintToString(sphere.center) << " of radius " << sphere.radius << ")";
     if (!hit) continue;
     ++hits;
     ASSERT_NEAR(gi::length(hit->point - sphere.center), sphere.radius, 1e-9 * (1 + sphere.radius))
-        << "ray " << k << ": the hit point must lie on the sphere";
-    ASSERT_TRUE(hit->t >= ray.t_min && hit->t <= ray.t_max) << "ray " << k << ": t outside [t_min, t_max]";
+        << "the hit point must lie on the sphere (random ray " << k << ")";
+    ASSERT_TRUE(hit->t >= ray.t_min && hit->t <= ray.t_max) << "t outside [t_min, t_max] (random ray " << k << ")";
     const bool inside_at_start = d_min < sphere.radius;
     const double radial = gi::dot(hit->point - sphere.center, ray.direction);
     ASSERT_TRUE(inside_at_start ? radial >= 0 : radial <= 0)
-        << "ray " << k << (inside_at_start ? ": starting inside, the first crossing is on the way out"
-                                           : ": starting outside, the first crossing is on the way in -- the nearer root");
+        << (inside_at_start ? "starting inside, the first crossing is on the way out"
+                            : "starting outside, the first crossing is on the way in: the nearer root")
+        << " (random ray " << k << ")";
   }
   EXPECT_GT(hits, 100) << "the random rays should hit often enough to test something";
 }
@@ -65,12 +67,14 @@ TEST(Ex1_2_RandomRays, TheHitLiesOnThePlaneWithinTheInterval) {
     if (std::abs(s_min) < 1e-6 || std::abs(s_max) < 1e-6) continue;
     const auto hit = gi::intersect(ray, plane);
     ASSERT_EQ(hit.has_value(), (s_min < 0) != (s_max < 0))
-        << "ray " << k << ": the segment from t_min to t_max " << ((s_min < 0) != (s_max < 0) ? "crosses" : "does not cross")
-        << " the plane (its ends are on " << ((s_min < 0) != (s_max < 0) ? "opposite sides" : "the same side") << ")";
+        << "the ray's segment from t_min to t_max " << ((s_min < 0) != (s_max < 0) ? "crosses" : "does not cross")
+        << " the plane: its ends are on " << ((s_min < 0) != (s_max < 0) ? "opposite sides" : "the same side")
+        << " (random ray " << k << ")";
     if (!hit) continue;
     ++hits;
-    ASSERT_NEAR(gi::dot(hit->point - plane.point, plane.normal), 0, 1e-9) << "ray " << k << ": the hit point must lie on the plane";
-    ASSERT_NEAR(gi::length(hit->point - ray.at(hit->t)), 0, 1e-9) << "ray " << k << ": the hit point is ray.at(t)";
+    ASSERT_NEAR(gi::dot(hit->point - plane.point, plane.normal), 0, 1e-9)
+        << "the hit point must lie on the plane (random ray " << k << ")";
+    ASSERT_NEAR(gi::length(hit->point - ray.at(hit->t)), 0, 1e-9) << "the hit point is ray.at(t) (random ray " << k << ")";
   }
   EXPECT_GT(hits, 100) << "the random rays should hit often enough to test something";
 }

@@ -35,13 +35,15 @@ TEST(Ex5_1_RandomBoxes, AgreesWithPointsAlongTheRay) {
     const auto t = gi::slab_test(ray, 1.0 / ray.direction, box);
     if (first < 0) {
       if (t) {
-        EXPECT_LE(ray.t_max - *t, 2 * step) << "ray " << k << " barely grazes the box, if at all";
+        EXPECT_LE(ray.t_max - *t, 2 * step) << "a hit, but the ray's segment stays outside the box (random ray " << k
+                                            << ")";
       }
       continue;
     }
-    ASSERT_TRUE(t) << "ray " << k << ": " << testing::PrintToString(ray) << " passes through "
-                   << testing::PrintToString(box) << " (at t = " << first << ")";
-    EXPECT_NEAR(*t, first, step * 1.01) << "ray " << k << ": the entry into the box within [t_min, t_max]";
+    ASSERT_TRUE(t) << "a miss, but the ray's segment passes through the box at t = " << first << " (random ray "
+                   << k << ": " << testing::PrintToString(ray) << ", " << testing::PrintToString(box) << ")";
+    EXPECT_NEAR(*t, first, step * 1.01) << "return where the segment [t_min, t_max] enters the box (random ray " << k
+                                        << ")";
   }
 }
 
@@ -61,12 +63,14 @@ TEST(Ex5_2_RandomScenes, AgreesWithBruteForce) {
       gi::TraversalCounts counts;
       const auto hit = gi::closest_hit(bvh, ray, &counts);
       ASSERT_EQ(hit.has_value(), expected.has_value())
-          << "scene " << scene_number << ", ray " << k << ": testing every quad " << (expected ? "finds" : "finds no")
-          << " hit";
+          << (expected ? "no hit, but testing every quad finds one" : "a hit, but testing every quad finds none")
+          << " (scene " << scene_number << ", ray " << k << ")";
       if (hit) {
         ASSERT_NEAR(hit->t, expected->t, 1e-9 * (1 + expected->t))
-            << "scene " << scene_number << ", ray " << k << ": not the nearest hit";
-        EXPECT_EQ(hit->object, expected->object) << "scene " << scene_number << ", ray " << k << ": the wrong quad";
+            << "not the nearest hit: testing every quad finds t = " << expected->t << " (scene " << scene_number
+            << ", ray " << k << ")";
+        EXPECT_EQ(hit->object, expected->object) << "the hit names the wrong quad (scene " << scene_number << ", ray "
+                                                 << k << ")";
       }
       ASSERT_LE(counts.primitive_tests, 300u) << "no quad needs testing twice for one ray";
     }
