@@ -14,7 +14,6 @@
 #include "gi/radiosity/form_factors.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
-#include "gi/report/options.hpp"
 #include "gi/report/table.hpp"
 
 namespace {
@@ -93,7 +92,7 @@ gi::FormFactorSettings with(FormFactorMethod method, const gi::FormFactorSetting
 const FormFactorMethod methods[] = {FormFactorMethod::Differential, FormFactorMethod::Analytic,
                                     FormFactorMethod::MonteCarlo, FormFactorMethod::Hemicube};
 
-void every_method_every_case(const std::vector<Case>& list, const gi::FormFactorSettings& base, const std::string& out) {
+void every_method_every_case(const std::vector<Case>& list, const gi::FormFactorSettings& base, gi::Lesson& lesson) {
   gi::Table table("Every method on every validation case (analytic order " + std::to_string(base.quadrature_order) +
                       ", " + std::to_string(base.rays) + " rays, hemicube " + std::to_string(base.hemicube_resolution) + ")",
                   {{"case"}, {"method"}, {"F", 5}, {"exact", 5}, {"rel. error", 2, gi::Format::Scientific},
@@ -105,11 +104,10 @@ void every_method_every_case(const std::vector<Case>& list, const gi::FormFactor
       table.add_row({c.name, gi::name(m), value, c.exact, std::abs(value - c.exact) / c.exact, us, c.source});
     }
   }
-  table.print();
-  table.write_csv(out + "/validation.csv");
+  lesson.table(table, "validation");
 }
 
-void near_field(const gi::FormFactorSettings& base, const std::string& out) {
+void near_field(const gi::FormFactorSettings& base, gi::Lesson& lesson) {
   gi::Table table("As two unit squares approach: relative error of each method",
                   {{"distance", 2}, {"exact F", 4}, {"differential", 2, gi::Format::Scientific},
                    {"analytic", 2, gi::Format::Scientific}, {"monte-carlo", 2, gi::Format::Scientific},
@@ -127,11 +125,10 @@ void near_field(const gi::FormFactorSettings& base, const std::string& out) {
     row.push_back(point);
     table.add_row(row);
   }
-  table.print();
-  table.write_csv(out + "/near_field.csv");
+  lesson.table(table, "near_field");
 }
 
-void hemicube_aliasing(const std::string& out) {
+void hemicube_aliasing(gi::Lesson& lesson) {
   // A 5 cm square ever farther above a unit square's centre, a little off-axis. The
   // reference is the contour integral from that centre: exactly what a hemicube
   // estimates, so the error left is the cells' alone.
@@ -152,12 +149,11 @@ void hemicube_aliasing(const std::string& out) {
     }
     table.add_row(row);
   }
-  table.print();
-  table.write_csv(out + "/hemicube_aliasing.csv");
+  lesson.table(table, "hemicube_aliasing");
 }
 
 // Error against time for each method over its parameter, on two unit squares at d = 1.
-void error_against_time(int most_rays, const std::string& out) {
+void error_against_time(int most_rays, gi::Lesson& lesson) {
   const gi::FormFactorScene scene(facing_squares(1));
   const double exact = gi::ff_parallel_rectangles(1, 1, 1);
   gi::Table table("Error against time, parallel squares d = 1 (Monte Carlo: RMS of 16 estimates, F their mean)",
@@ -191,47 +187,42 @@ void error_against_time(int most_rays, const std::string& out) {
   for (int rays = 100; rays <= most_rays; rays *= 10) ray_counts.push_back(rays);
   sweep(FormFactorMethod::MonteCarlo, "rays", ray_counts, [](auto& s, int v) { s.rays = v; });
   sweep(FormFactorMethod::Hemicube, "res", {10, 20, 50, 100, 200, 400}, [](auto& s, int v) { s.hemicube_resolution = v; });
-  table.print();
-  table.write_csv(out + "/error_vs_time.csv");
+  lesson.table(table, "error_vs_time");
   curves.front().mark = gi::Mark::Points;
-  gi::write_svg({"Form factor of two unit squares at d = 1: error against time", "time per evaluation (us)",
-                 "relative error", true, true, curves},
-                out + "/error_vs_time.svg");
+  lesson.chart({"Form factor of two unit squares at d = 1: error against time", "time per evaluation (us)",
+                "relative error", true, true, curves},
+               "error_vs_time");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gi::run_lesson("06_form_factors", [&] {
-    gi::CommonOptions common;
-    gi::FormFactorSettings base;
-    base.rays = 10000;
-    base.quadrature_order = 4;
-    int sweep_rays = 1'000'000, reference_rays = 4'000'000;
-    gi::Options options("06_form_factors", "Form factors: differential, analytic, Monte Carlo and hemicube against "
-                                           "closed forms; near field, occlusion, aliasing, noise; error against time.");
-    gi::add_common_options(options, common, "06_form_factors");
-    options.add("--rays", base.rays, "Monte Carlo rays per form factor", 1, 10'000'000)
-        .add("--order", base.quadrature_order, "analytic: order x order Gauss points", 1, 16)
-        .add("--resolution", base.hemicube_resolution, "hemicube cells across the top face (even)", 2, 2000)
-        .add("--sweep-rays", sweep_rays, "largest ray count in the error-against-time sweep", 100, 100'000'000)
-        .add("--reference-rays", reference_rays, "Monte Carlo rays of the occluded case's reference", 1000,
-             100'000'000);
-    if (!options.parse(argc, argv)) return 0;
-    if (base.hemicube_resolution % 2) throw gi::OptionError("the hemicube resolution must be even");
-    base.seed = common.seed;
-    const std::string& out = common.out;
+  gi::Lesson lesson("06_form_factors", "Form factors: differential, analytic, Monte Carlo and hemicube against "
+                                       "closed forms; near field, occlusion, aliasing, noise; error against time.",
+                    {.threads = false});
+  gi::FormFactorSettings base;
+  base.rays = 10000;
+  base.quadrature_order = 4;
+  int sweep_rays = 1'000'000, reference_rays = 4'000'000;
+  lesson.options()
+      .add("--rays", base.rays, "Monte Carlo rays per form factor", 1, 10'000'000)
+      .add("--order", base.quadrature_order, "analytic: order x order Gauss points", 1, 16)
+      .add("--resolution", base.hemicube_resolution, "hemicube cells across the top face", 2, 2000, gi::even)
+      .add("--sweep-rays", sweep_rays, "largest ray count in the error-against-time sweep", 100, 100'000'000)
+      .add("--reference-rays", reference_rays, "Monte Carlo rays of the occluded case's reference", 1000,
+           100'000'000);
+  return lesson.run(argc, argv, [&] {
+    base.seed = lesson.seed();
     double reference_ms = 0;
     const std::vector<Case> list = cases(reference_rays, reference_ms);
-    every_method_every_case(list, base, out);
-    std::cout << "(the occluded case's reference took " << gi::format_number(reference_ms, 0, gi::Format::Fixed)
-              << " ms)\n\n";
-    near_field(base, out);
+    every_method_every_case(list, base, lesson);
+    lesson.say("(the occluded case's reference took " + gi::format_number(reference_ms, 0, gi::Format::Fixed) +
+               " ms)\n");
+    near_field(base, lesson);
     std::cout << '\n';
-    hemicube_aliasing(out);
+    hemicube_aliasing(lesson);
     std::cout << '\n';
-    error_against_time(sweep_rays, out);
-    std::cout << "\ntables and chart: " << out << "/\n";
-    return 0;
+    error_against_time(sweep_rays, lesson);
+    lesson.say("\ntables and chart: " + lesson.out().string() + "/");
   });
 }

@@ -45,6 +45,11 @@ std::vector<Color> with_ambient(const std::vector<double>& area, const std::vect
   return shown;
 }
 
+ShooterRow patch_shooter(const FormFactorScene& receivers, const Mesh& mesh, const FormFactorSettings& settings) {
+  check(settings);
+  return [&receivers, &mesh, settings](int p) { return form_factor_row(receivers, mesh.patches[p].shape, p, settings); };
+}
+
 int choose_shooter(const std::vector<Patch>& patches, const std::vector<double>& area,
                    const std::vector<Color>& unshot) {
   // BEGIN EXERCISE 11.3 choosing the shooter: the most unshot power

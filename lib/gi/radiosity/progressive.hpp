@@ -2,6 +2,7 @@
 #include <functional>
 #include <vector>
 
+#include "gi/radiosity/form_factors.hpp"
 #include "gi/radiosity/mesh.hpp"
 #include "gi/radiosity/solver.hpp"
 
@@ -19,6 +20,11 @@ namespace gi {
 
 // The form factors from patch p to every element, computed when p shoots.
 using ShooterRow = std::function<std::vector<double>(int patch)>;
+
+// The usual ShooterRow: patch p's row by `settings` (a hemicube at the patch's centre
+// by default) against `receivers`, which must be built from element_shapes(mesh).
+// It keeps references to `receivers` and `mesh`: they must outlive it.
+ShooterRow patch_shooter(const FormFactorScene& receivers, const Mesh& mesh, const FormFactorSettings& settings);
 
 // One shot from `patch`: its unshot radiosity dB_p is the area-weighted mean of its
 // elements' unshot radiosities, which are cleared (shot); every element j then
