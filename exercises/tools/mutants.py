@@ -3,9 +3,11 @@ in one exercise region of the reference; the graded tests of that exercise must 
 
     exercises/tools/mutants.py [--work DIR] [--only ID,...] [--min-caught 0.95] [FILE.mut ...]
 
-The mutants (exercises/mutants/*.mut, or the files named) are applied one at a time
-to a copy of the tree in WORK/src, whose build in WORK/build is incremental: a
-mutant costs one file's compile and one lab's link. A mutant that no longer applies
+The mutants (exercises/mutants/*.mut, or the files named) are planted in a copy of
+the tree in WORK/src, whose build in WORK/build is incremental: a mutant costs one
+file's compile and one lab's link. They go in rounds of one mutant per lab, built
+together (no graded test calls another lab's exercises, so each lab's tests see their
+own lab's bug only); --serial plants one at a time. A mutant that no longer applies
 (its lines are not found, exactly once, inside its region) or no longer compiles is
 an error, never "caught". The report lists per mutant the tests that caught it, the
 first hint a student would read, and tests of *other* exercises that failed too
@@ -142,19 +144,7 @@ class Verdict:
     problem: str = ""   # does not apply / does not compile
 
 
-def run_one(mutant, work, limit):
-    source = ROOT / mutant.file
-    target = work / "src" / mutant.file
-    try:
-        target.write_text(apply(source.read_text(), mutant))
-        error = build.build_lab(work / "build", mutant.lab)
-        if error:
-            return Verdict(mutant, [], [], "", f"does not compile: {build.first_error(error)}")
-        tests = grade.source_tests(work / "src", mutant.lab)
-        results, problem = grade.grade_lab(work / "build" / "bin" / f"lab{mutant.lab:02d}_graded", mutant.lab, tests,
-                                           limit, {})
-    finally:
-        shutil.copyfile(source, target)  # a new mtime, so the build sees the change back
+def verdict(mutant, results, problem):
     if problem:
         return Verdict(mutant, [], [], "", problem)
     failed = [r for r in results if not r.passed]
@@ -163,14 +153,46 @@ def run_one(mutant, work, limit):
                    mine[0].hint if mine else "")
 
 
+def run_round(batch, work, limit):
+    """Verdicts on mutants of different labs, planted and built together: both cores
+    compile, and each lab's tests see their own lab's bug only, since no graded test
+    calls another lab's exercises. A round that does not build is run one by one."""
+    texts = {m.file: (ROOT / m.file).read_text() for m in batch}
+    for m in batch:
+        texts[m.file] = apply(texts[m.file], m)
+    try:
+        for file, text in texts.items():
+            (work / "src" / file).write_text(text)
+        error = build.build_labs(work / "build", sorted({m.lab for m in batch}))
+        if not error:
+            return [verdict(m, *grade.grade_lab(work / "build" / "bin" / f"lab{m.lab:02d}_graded", m.lab,
+                                                 grade.source_tests(work / "src", m.lab), limit, {}))
+                    for m in batch]
+        if len(batch) == 1:
+            return [Verdict(batch[0], [], [], "", f"does not compile: {build.first_error(error)}")]
+    finally:
+        for file in texts:
+            shutil.copyfile(ROOT / file, work / "src" / file)  # a new mtime, so the build sees the change back
+    return [v for m in batch for v in run_round([m], work, limit)]
+
+
+def rounds(mutants, serial):
+    """The mutants in rounds of at most one per lab (or one per round, `serial`)."""
+    if serial:
+        return [[m] for m in mutants]
+    by_lab = {}
+    for m in mutants:
+        by_lab.setdefault(m.lab, []).append(m)
+    return [[queue[k] for queue in by_lab.values() if k < len(queue)] for k in range(max(map(len, by_lab.values())))]
+
+
 def prepare(work, labs):
     """The copy of the tree and its build, with the reference's graded tests passing."""
     build.sync_tree(ROOT, work / "src")
     build.configure(work / "src", work / "build", quick=True)
-    for lab in labs:
-        error = build.build_lab(work / "build", lab)
-        if error:
-            raise MutantError(f"the reference's lab {lab} does not build: {build.first_error(error)}")
+    error = build.build_labs(work / "build", labs)
+    if error:
+        raise MutantError(f"the reference's graded tests do not build: {build.first_error(error)}")
 
 
 def main(argv):
@@ -180,6 +202,8 @@ def main(argv):
     parser.add_argument("--only", help="mutant names or exercise ids, comma-separated")
     parser.add_argument("--min-caught", type=float, default=0.95)
     parser.add_argument("--timeout", type=grade.positive_seconds, default=None)
+    parser.add_argument("--serial", action="store_true",
+                        help="one mutant at a time (for mutants whose lab's tests call another lab's exercises)")
     args = parser.parse_args(argv)
     files = args.files or sorted((ROOT / "exercises" / "mutants").glob("*.mut"))
     try:
@@ -198,14 +222,15 @@ def main(argv):
         return 1
     limit = grade.time_limit(work / "build", args.timeout)
     verdicts = []
-    for k, m in enumerate(mutants, 1):
-        v = run_one(m, work, limit)
-        verdicts.append(v)
-        status = v.problem or (f"caught by {len(v.caught_by)}" if v.caught_by else "NOT CAUGHT")
-        extra = f"; also fails {len(v.elsewhere)} of other exercises: {', '.join(v.elsewhere[:3])}" if v.elsewhere else ""
-        print(f"[{k}/{len(mutants)}] {m.id:<45} {status}{extra}", flush=True)
-        if v.hint:
-            print(f"        hint: {v.hint[:160]}")
+    for batch in rounds(mutants, args.serial):
+        for v in run_round(batch, work, limit):
+            verdicts.append(v)
+            status = v.problem or (f"caught by {len(v.caught_by)}" if v.caught_by else "NOT CAUGHT")
+            extra = (f"; also fails {len(v.elsewhere)} of other exercises: {', '.join(v.elsewhere[:3])}"
+                     if v.elsewhere else "")
+            print(f"[{len(verdicts)}/{len(mutants)}] {v.mutant.id:<45} {status}{extra}", flush=True)
+            if v.hint:
+                print(f"        hint: {v.hint[:160]}")
     broken = [v for v in verdicts if v.problem]
     caught = [v for v in verdicts if v.caught_by]
     fraction = len(caught) / len(verdicts)
