@@ -147,6 +147,10 @@ ObjMesh read_obj(const std::filesystem::path& file, const std::string& shown_nam
     throw SceneError(shown_name, "larger than " + size_text(limits.max_bytes));
   std::ifstream in(file, std::ios::binary);
   if (!in) throw SceneError(shown_name, std::string("cannot open the file (") + std::strerror(errno) + ")");
+  return read_obj(in, shown_name, limits);
+}
+
+ObjMesh read_obj(std::istream& in, const std::string& shown_name, const ObjLimits& limits) {
   ObjReader reader(shown_name, limits);
   // Lines are read whole; the size check above bounds the longest.
   for (std::string line; std::getline(in, line);) reader.line(line);

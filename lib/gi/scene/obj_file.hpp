@@ -1,6 +1,7 @@
 #pragma once
 #include <cstddef>
 #include <filesystem>
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -43,5 +44,7 @@ struct ObjLimits {
 // face of fewer than 3 or more than 4 corners or one that is not flat and convex, or
 // passes a limit. Nothing is guessed: a bad face is an error, never dropped.
 ObjMesh read_obj(const std::filesystem::path& file, const std::string& shown_name, const ObjLimits& limits = {});
+// The same from a stream (the file's size limit is the caller's).
+ObjMesh read_obj(std::istream& in, const std::string& shown_name, const ObjLimits& limits = {});
 
 }  // namespace gi

@@ -22,8 +22,8 @@ class SceneReader {
  public:
   explicit SceneReader(const fs::path& file) : path_(file), schema_(file.string()) { out_.file = file.string(); }
 
-  SceneFile read() {
-    const JsonValue root = parse_json(text(), schema_.file());
+  SceneFile read(const std::string& text) {
+    const JsonValue root = parse_json(text, schema_.file());
     const Fields top = schema_.object(root, "",
                                       {{"name"}, {"camera", true}, {"background"}, {"ambient_light"}, {"materials"},
                                        {"spheres"}, {"planes"}, {"boxes"}, {"quads"}, {"polygons"}, {"meshes"},
@@ -51,8 +51,7 @@ class SceneReader {
     return std::move(out_);
   }
 
- private:
-  std::string text() const {
+  std::string file_text() const {
     std::error_code error;
     const fs::file_status status = fs::status(path_, error);
     if (!fs::exists(status)) throw SceneError(schema_.file(), "no such file");
@@ -67,6 +66,7 @@ class SceneReader {
     return text.str();
   }
 
+ private:
   template <class PerItem>
   void each(const Fields& top, const char* key, PerItem per_item) {
     if (const JsonValue* list = top[key]) {
@@ -263,7 +263,12 @@ class SceneReader {
 
 }  // namespace
 
-SceneFile read_scene_file(const fs::path& file) { return SceneReader(file).read(); }
+SceneFile read_scene_file(const fs::path& file) {
+  SceneReader reader(file);
+  return reader.read(reader.file_text());
+}
+
+SceneFile read_scene_text(const std::string& text, const fs::path& file) { return SceneReader(file).read(text); }
 
 Scene ray_tracing_scene(const SceneFile& file, std::vector<std::string>& warnings) {
   Scene s = file.scene;

@@ -81,6 +81,9 @@ struct SceneFile {
 
 // Reads and checks a scene file (and the OBJ files it names). Throws SceneError.
 SceneFile read_scene_file(const std::filesystem::path& file);
+// The same for text already read: `file` names it in messages, and OBJ paths are
+// relative to its folder.
+SceneFile read_scene_text(const std::string& text, const std::filesystem::path& file);
 
 // The ray tracer's scene: the file's scene with its polygons added as triangles, a
 // quadrilateral c0 c1 c2 c3 as (c0, c1, c2) and (c0, c2, c3). Adds a warning if no
