@@ -39,8 +39,10 @@ RadiosityScene radiosity_scene(const SceneFile& file, std::vector<std::string>& 
   std::vector<bool> warned(file.scene.materials.size(), false);
   for (const FilePolygon& p : file.polygons) {
     const Material& m = file.scene.materials[p.material];
+    // rho = k_d; a Lambertian emitter of radiance L has the exitance E = pi L.
     std::array<std::array<vec3, 4>, 3> pieces;
-    for (int i = 0; i < flat_pieces(p.shape, pieces); ++i) scene.surfaces.push_back({p.name, pieces[i], m.diffuse, pi * m.emission});
+    for (int i = 0; i < flat_pieces(p.shape, pieces); ++i)
+      scene.surfaces.push_back({p.name, pieces[i], m.diffuse, pi * m.emission});
     if (max_component(m.diffuse) > 1 && !warned[p.material]) {
       warned[p.material] = true;
       warnings.push_back(file.file + ": material '" + m.name + "' reflects more than it receives (diffuse above 1): " +
