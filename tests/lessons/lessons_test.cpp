@@ -116,7 +116,8 @@ TEST(Lessons, FormFactorsCompareEveryMethodWithTheClosedForms) {
                                               out_dir("06"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("closed form"), std::string::npos);
-  for (const char* file : {"validation.csv", "near_field.csv", "hemicube_aliasing.csv", "error_vs_time.svg"})
+  EXPECT_NE(r.output.find("Where each method fails"), std::string::npos);
+  for (const char* file : {"validation.csv", "failures.csv", "near_field.csv", "hemicube_aliasing.csv", "error_vs_time.svg"})
     EXPECT_TRUE(fs::exists(out_dir("06") + "/" + file)) << file;
   EXPECT_EQ(run("06_form_factors", "--resolution 33").status, 2) << "odd resolutions are refused";
 }
@@ -127,6 +128,7 @@ TEST(Lessons, HemicubeWritesItsPicturesAndTables) {
                                              out_dir("07"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("reciprocity"), std::string::npos);
+  EXPECT_NE(r.output.find("sub-cell receivers"), std::string::npos);
   for (const char* file : {"item_buffer.png", "delta_form_factors.png", "form_factor_matrix.png", "resolution.csv",
                            "speed.csv"})
     EXPECT_TRUE(fs::exists(out_dir("07") + "/" + file)) << file;
