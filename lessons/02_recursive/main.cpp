@@ -140,7 +140,8 @@ int main(int argc, char** argv) {
                       ray_columns("depth"));
       table.add_row(ray_row(*single_depth, r, nullptr));
       lesson.table(table, stem);
-      lesson.picture(r.image, stem, "scene " + scene.name + " at depth limit " + std::to_string(*single_depth), view(world, settings));
+      lesson.picture(r.image, stem, "scene " + scene.name + " at depth limit " + std::to_string(*single_depth),
+                     view(world, settings));
       return;
     }
 

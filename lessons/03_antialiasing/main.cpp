@@ -43,7 +43,8 @@ gi::View view(const gi::World& world, const gi::RenderSettings& settings) {
 gi::Image reference_image(const gi::World& world, gi::RenderSettings settings, int n, gi::Lesson& lesson) {
   settings.sampling = {gi::Sampler::Jittered, n};
   settings.seed += 1000;  // independent of the jittered runs being measured
-  gi::CachedImage cached = gi::cached_reference(world, settings, "scene " + world.scene.name + ", fingerprint " + gi::fingerprint(world.scene), lesson.out());
+  const std::string scene_key = "scene " + world.scene.name + ", fingerprint " + gi::fingerprint(world.scene);
+  gi::CachedImage cached = gi::cached_reference(world, settings, scene_key, lesson.out());
   if (cached.from_cache) lesson.say("reference: read from the cache " + cached.file.string() + "\n");
   else if (cached.reason != "no cached image") lesson.say("reference: rendered again, " + cached.reason + "\n");
   lesson.record(cached.file, gi::OutputKind::Cache, "the cached reference image, linear");

@@ -123,7 +123,8 @@ int main(int argc, char** argv) {
 
     const std::string what = built_in ? "light size " + gi::format_number(light_size, 2, gi::Format::Fixed)
                                       : "scene " + scene.name;
-    gi::Table table("Shadow rays per hit, " + what + ", against jittered " + std::to_string(reference_n) + "x" + std::to_string(reference_n),
+    gi::Table table("Shadow rays per hit, " + what + ", against jittered " + std::to_string(reference_n) + "x" +
+                        std::to_string(reference_n),
                     {{"sampling"}, {"rays/hit"}, {"shadow rays"}, {"ms", 1}, {"RMSE", 2, gi::Format::Scientific},
                      {"PSNR dB", 1}});
     std::vector<gi::Series> curves;

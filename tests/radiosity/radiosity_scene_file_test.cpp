@@ -57,6 +57,7 @@ const char* const cube_obj =
 // must accept exactly what make_polygon accepts, so a file that reads also meshes.
 // Random quadrilaterals around the flatness tolerance and around convexity.
 TEST(RadiosityFromFile, ThePolygonCheckAgreesWithMakePolygon) {
+  EXPECT_EQ(gi::flatness_tolerance, gi::planarity_tolerance) << "flat_polygon.hpp must follow polygon.hpp";
   gi::Rng rng(18);
   int accepted = 0, refused = 0;
   for (int i = 0; i < 20000; ++i) {
@@ -205,8 +206,24 @@ TEST(RadiosityFromFile, ChoicesNameABuiltInSceneOrAFileAndChangesApply) {
   try {
     (void)gi::load_radiosity_scene(cornell, {}, 10, warnings);
     FAIL() << "no exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), cornell + " has 19 surfaces (a triangle makes three), more than the 10 patches "
+  } catch (const gi::SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), cornell + ": 19 surfaces (a triangle makes three), more than the 10 patches "
                                                "this lesson solves for in seconds");
+  }
+}
+
+TEST(RadiosityFromFile, SurfacesThatOverlapInAPlaneAreRefusedBeforeAnyWork) {
+  const auto folder = gi_test::scratch_folder("overlap");
+  const auto file = gi_test::write_text(folder / "overlap.json", "{" + gi_test::camera + R"(,
+    "materials": [{"name": "lamp", "emission": 1}],
+    "quads": [{"corner": [0, 0, 0], "edge_u": [0, 0, 1], "edge_v": [1, 0, 0], "material": "lamp", "name": "a"},
+              {"corner": [0.5, 0, 0.5], "edge_u": [0, 0, 1], "edge_v": [1, 0, 0], "material": "lamp", "name": "b"}]})");
+  std::vector<std::string> warnings;
+  try {
+    (void)gi::load_radiosity_scene(file.string(), {}, 100, warnings);
+    FAIL() << "no exception";
+  } catch (const gi::SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), file.string() + ": surfaces 'a' and 'b' lie in one plane and overlap; remove "
+                                                     "one, or move it off the other");
   }
 }

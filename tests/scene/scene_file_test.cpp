@@ -208,3 +208,27 @@ TEST(SceneFile, ChoicesNameAFileOrABuiltInScene) {
                                      "spheres, s10, aliasing, soft; or a scene file ending in .json");
   }
 }
+
+// A file may name many materials, and an OBJ many usemtl names: looking them up must
+// not cost a search through all of them per shape. With 200 000 materials a search
+// per name would make 2 x 10^10 string comparisons (minutes; the test then fails by
+// ctest's timeout); by map, it reads in well under a second.
+TEST(SceneFile, ManyMaterialsAreLookedUpByName) {
+  std::string materials = "\"materials\": [";
+  const int count = 200'000;
+  for (int i = 0; i < count; ++i) materials += (i ? ", " : "") + std::string("{\"name\": \"m") + std::to_string(i) + "\"}";
+  materials += "]";
+  std::string spheres = "\"spheres\": [";
+  for (int i = 0; i < 1000; ++i)
+    spheres += (i ? ", " : "") + std::string(R"({"center": [0, 0, -5], "radius": 1, "material": "m)") +
+               std::to_string(count - 1 - i) + "\"}";
+  spheres += "]";
+  const auto folder = gi_test::scratch_folder("many_materials");
+  const std::string text = "{" + camera + ", " + materials + ", " + spheres + "}";
+  const gi::SceneFile file = gi::read_scene_text(text, folder / "many.json");
+  ASSERT_EQ(file.scene.materials.size(), static_cast<std::size_t>(count));
+  EXPECT_EQ(file.scene.spheres.back().material, count - 1000);
+  std::string duplicate = text;
+  duplicate.replace(duplicate.find("\"m1\""), 4, "\"m0\"");
+  EXPECT_EQ(scene_error(duplicate), "box.json:1:93: materials[1].name: 'm0' is the name of materials[0] already");
+}

@@ -57,21 +57,24 @@ RadiosityScene radiosity_scene(const SceneFile& file, std::vector<std::string>& 
   return scene;
 }
 
+void check_meshable(const RadiosityScene& scene, const std::string& file, int most_surfaces) {
+  if (scene.surfaces.size() > static_cast<std::size_t>(most_surfaces))
+    throw SceneError(file, std::to_string(scene.surfaces.size()) + " surfaces (a triangle makes three), more than the " +
+                               std::to_string(most_surfaces) + " patches this lesson solves for in seconds");
+  try {
+    (void)make_mesh(scene.surfaces, {});  // one patch per surface: the surfaces' own checks
+  } catch (const std::invalid_argument& e) {
+    throw SceneError(file, e.what());
+  }
+}
+
 RadiosityScene load_radiosity_scene(const std::string& choice, const SceneChanges& changes, int most_surfaces,
                                     std::vector<std::string>& warnings) {
   RadiosityScene scene;
   const std::vector<std::string> names = radiosity_scene_names(), ray_traced = scene_names();
   if (names_a_file(choice)) {
     scene = radiosity_scene(read_scene_file(choice), warnings);
-    if (scene.surfaces.size() > static_cast<std::size_t>(most_surfaces))
-      throw std::invalid_argument(choice + " has " + std::to_string(scene.surfaces.size()) + " surfaces (a triangle " +
-                                  "makes three), more than the " + std::to_string(most_surfaces) +
-                                  " patches this lesson solves for in seconds");
-    try {
-      (void)make_mesh(scene.surfaces, {});  // one patch per surface: the surfaces' own checks
-    } catch (const std::invalid_argument& e) {
-      throw SceneError(choice, e.what());
-    }
+    check_meshable(scene, choice, most_surfaces);
   } else if (std::find(names.begin(), names.end(), choice) != names.end()) {
     scene = make_radiosity_scene(choice);
   } else {

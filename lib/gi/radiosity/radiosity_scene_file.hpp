@@ -17,13 +17,17 @@ namespace gi {
 // Warns of a reflectance above 1 (light from nowhere).
 RadiosityScene radiosity_scene(const SceneFile& file, std::vector<std::string>& warnings);
 
+// Throws SceneError naming `file` if the scene has more than `most_surfaces` surfaces
+// (every surface is one patch at least, and a lesson's solver has a largest size it runs
+// in seconds) or cannot be meshed: make_mesh's checks, such as two surfaces that
+// overlap in one plane. The count comes first: those checks compare every pair.
+void check_meshable(const RadiosityScene& scene, const std::string& file, int most_surfaces);
+
 // --scene NAME|FILE for the radiosity lessons: a built-in radiosity scene
-// (radiosity_scenes.hpp) or a scene file, with the command line's changes applied,
-// checked to mesh (make_mesh) into at most `most_surfaces` patches (every surface is
-// one patch at least, and a lesson's solver has a largest size it runs in seconds).
-// Throws std::invalid_argument for an unknown name (or a ray-tracing scene's), too
-// many surfaces, a degenerate camera or a light scale that names no light; SceneError
-// for a bad file or one whose surfaces cannot be meshed.
+// (radiosity_scenes.hpp) or a scene file (checked by check_meshable), with the
+// command line's changes applied. Throws std::invalid_argument for an unknown name (or
+// a ray-tracing scene's), a degenerate camera or a light scale that names no light;
+// SceneError for a bad file.
 RadiosityScene load_radiosity_scene(const std::string& choice, const SceneChanges& changes, int most_surfaces,
                                     std::vector<std::string>& warnings);
 

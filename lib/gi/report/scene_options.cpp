@@ -47,7 +47,8 @@ CameraChange parse_camera_change(const std::string& text) {
   if (change.eye == change.look_at) throw OptionError("--camera: the eye and the point looked at must differ");
   if (parts.size() == 3) {
     const double fov = number(parts[2], "--camera field of view");
-    if (!(fov > 0 && fov < 180)) throw OptionError("--camera: the field of view must lie in (0, 180) degrees, got " + parts[2]);
+    if (!(fov > 0 && fov < 180))
+      throw OptionError("--camera: the field of view must lie in (0, 180) degrees, got " + parts[2]);
     change.fov = fov;
   }
   return change;

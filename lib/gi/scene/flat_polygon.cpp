@@ -30,8 +30,9 @@ std::string quadrilateral_problem(const std::array<vec3, 4>& c) {
   for (const vec3& p : c) off = std::max(off, std::abs(dot(p - mean, normal)) / size);
   if (off > flatness_tolerance) {
     char text[128];
-    std::snprintf(text, sizeof text, "the corners are not in one plane (a corner is %.2g%% of its size off it; at most %g%%)",
-                  100 * off, 100 * flatness_tolerance);
+    std::snprintf(text, sizeof text,
+                  "the corners are not in one plane (a corner is %.2g%% of its size off it; at most %g%%)", 100 * off,
+                  100 * flatness_tolerance);
     return text;
   }
   for (int i = 0; i < 4; ++i)

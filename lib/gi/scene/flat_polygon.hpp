@@ -15,8 +15,8 @@ struct FlatPolygon {
 };
 
 // How far a corner may lie off the mean plane, as a fraction of the polygon's size
-// (its longer diagonal): the tolerance of radiosity's make_polygon
-// (radiosity/polygon.hpp), with which a test keeps it equal.
+// (its longer diagonal): radiosity's planarity_tolerance (radiosity/polygon.hpp), one
+// floor up, with which a test keeps it equal.
 inline constexpr double flatness_tolerance = 0.01;
 
 // An empty string if the polygon is fit for both renderers, else what is wrong, in

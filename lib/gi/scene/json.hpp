@@ -54,9 +54,4 @@ struct JsonLimits {
 // (not JSON), a control character in a string, text after the value, a limit passed.
 JsonValue parse_json(std::string_view text, const std::string& file, const JsonLimits& limits = {});
 
-// Is the text UTF-8 (RFC 3629: no overlong forms, no surrogates, nothing past
-// U+10FFFF)? If not, `bad_column` gets the column (in characters, from 1) of the
-// first byte that is not.
-bool is_utf8(std::string_view text, int* bad_column = nullptr);
-
 }  // namespace gi

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <unordered_map>
 
 #include "gi/scene/json.hpp"
+#include "gi/scene/utf8.hpp"
 
 namespace gi {
 
@@ -55,10 +57,10 @@ class ObjReader {
       face(w);
     } else if (keyword == "usemtl") {
       if (w.size() != 2) fail(w[0].column, "usemtl", "expected one material name after usemtl");
-      const std::string name(w[1].text);
-      const auto at = std::find(mesh_.material_names.begin(), mesh_.material_names.end(), name);
-      material_ = static_cast<int>(at - mesh_.material_names.begin());
-      if (at == mesh_.material_names.end()) mesh_.material_names.push_back(name);
+      // A map, not a search: a hostile file's million names must not cost 10^12 steps.
+      const auto [at, added] = material_index_.try_emplace(std::string(w[1].text), mesh_.material_names.size());
+      if (added) mesh_.material_names.push_back(at->first);
+      material_ = static_cast<int>(at->second);
     } else if (keyword != "vt" && keyword != "vn" && keyword != "mtllib" && keyword != "o" && keyword != "g" &&
                keyword != "s") {
       fail(w[0].column, "", "'" + std::string(keyword.substr(0, 40)) +
@@ -103,7 +105,8 @@ class ObjReader {
     const bool rest_ok = std::all_of(w.text.begin() + static_cast<std::ptrdiff_t>(first.size()), w.text.end(),
                                      [](char c) { return c == '/' || c == '-' || (c >= '0' && c <= '9'); });
     if (error != std::errc() || end != first.data() + first.size() || !rest_ok || first.empty())
-      fail(w.column, "f", "expected a vertex index such as 7, 7/2 or 7//3, got '" + std::string(w.text.substr(0, 40)) + "'");
+      fail(w.column, "f",
+           "expected a vertex index such as 7, 7/2 or 7//3, got '" + std::string(w.text.substr(0, 40)) + "'");
     const auto n = static_cast<long long>(vertices_.size());
     const long long at = index < 0 ? n + index : index - 1;
     if (index == 0 || at < 0 || at >= n)
@@ -132,6 +135,7 @@ class ObjReader {
   ObjLimits limits_;
   int line_ = 0;
   int material_ = -1;
+  std::unordered_map<std::string, std::size_t> material_index_;
   std::vector<vec3> vertices_;
   ObjMesh mesh_;
 };

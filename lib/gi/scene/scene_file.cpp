@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <fstream>
 #include <sstream>
+#include <unordered_map>
 
 #include "gi/core/did_you_mean.hpp"
-#include "gi/scene/builtin_scenes.hpp"
 #include "gi/scene/obj_file.hpp"
 #include "gi/scene/scene_schema.hpp"
 
@@ -106,10 +106,9 @@ class SceneReader {
                                               {"checker_diffuse"}});
     Material m;
     m.name = schema_.text(*f["name"], path + ".name");
-    for (std::size_t i = 0; i < out_.scene.materials.size(); ++i)
-      if (out_.scene.materials[i].name == m.name)
-        schema_.fail(*f["name"], path + ".name", "'" + m.name + "' is the name of materials[" + std::to_string(i) +
-                                                     "] already");
+    if (const int earlier = find_material(m.name); earlier >= 0)
+      schema_.fail(*f["name"], path + ".name",
+                   "'" + m.name + "' is the name of materials[" + std::to_string(earlier) + "] already");
     const auto colour = [&](const char* key, Color& c) {
       if (f[key]) c = schema_.colour(*f[key], member_path(path, key));
     };
@@ -117,21 +116,33 @@ class SceneReader {
       if (f[key]) x = schema_.number(*f[key], member_path(path, key), min, max, above_min);
     };
     colour("diffuse", m.diffuse), colour("specular", m.specular), colour("mirror", m.mirror);
-    colour("transmission", m.transmission), colour("emission", m.emission), colour("checker_diffuse", m.checker_diffuse);
+    colour("transmission", m.transmission), colour("emission", m.emission);
+    colour("checker_diffuse", m.checker_diffuse);
     number("ambient", m.ambient, 0, 1e6), number("shininess", m.shininess, 0, 1e6);
     number("ior", m.ior, 0, 100, true), number("checker_size", m.checker_size, 0, 1e6);
     checked(v, path, [&] { out_.scene.add(m); });
+    material_index_.emplace(m.name, static_cast<int>(out_.scene.materials.size()) - 1);
+  }
+
+  // The index of the material named `name`, or -1; the names, for "did you mean".
+  int find_material(const std::string& name) const {
+    const auto found = material_index_.find(name);
+    return found == material_index_.end() ? -1 : found->second;
+  }
+  std::vector<std::string> material_names() const {
+    std::vector<std::string> names;
+    for (const Material& m : out_.scene.materials) names.push_back(m.name);
+    return names;
   }
 
   // The index of the material a shape names.
   int material_named(const std::string& name, const JsonValue& at, const std::string& path) const {
-    std::vector<std::string> names;
-    for (std::size_t i = 0; i < out_.scene.materials.size(); ++i) {
-      if (out_.scene.materials[i].name == name) return static_cast<int>(i);
-      names.push_back(out_.scene.materials[i].name);
-    }
-    schema_.fail(at, path, "no material is named '" + name.substr(0, 64) + "'" + did_you_mean(name, names) +
-                               (names.empty() ? " (the file has no \"materials\")" : ""));
+    const int found = find_material(name);
+    if (found < 0)
+      schema_.fail(at, path,
+                   "no material is named '" + name.substr(0, 64) + "'" + did_you_mean(name, material_names()) +
+                       (out_.scene.materials.empty() ? " (the file has no \"materials\")" : ""));
+    return found;
   }
   int material_of(const Fields& f, const std::string& path) const {
     return material_named(schema_.text(*f["material"], path + ".material"), *f["material"], path + ".material");
@@ -208,29 +219,28 @@ class SceneReader {
     const std::string relative = schema_.text(*f["file"], path + ".file");
     const std::string shown = (path_.parent_path() / relative).lexically_normal().string();
     const int fallback = f["material"] ? material_of(f, path) : -1;
-    ObjLimits limits;
-    limits.max_faces = ObjLimits{}.max_faces - std::min(ObjLimits{}.max_faces, mesh_faces_);
     const fs::path file = path_.parent_path() / relative;
     std::error_code error;
     if (!fs::exists(file, error)) schema_.fail(*f["file"], path + ".file", "no such file: " + shown);
+    const ObjLimits most;
+    mesh_bytes_ += fs::file_size(file, error);
+    if (mesh_bytes_ > most.max_bytes)
+      schema_.fail(*f["file"], path + ".file", "the meshes together are larger than " + size_text(most.max_bytes));
+    ObjLimits limits;
+    limits.max_faces = most.max_faces - std::min(most.max_faces, mesh_faces_);
     const ObjMesh obj = read_obj(file, shown, limits);
     mesh_faces_ += obj.faces.size();
-    std::vector<int> materials;  // the scene's index of each usemtl name
+    std::vector<int> used;  // the scene's index of each usemtl name, -1 if it has none
+    for (const std::string& name : obj.material_names) used.push_back(find_material(name));
     for (const ObjFace& face : obj.faces) {
       const FileLocation at{shown, face.line, 1, "f"};
+      const int material = face.material < 0 ? fallback : used[face.material];
       if (face.material < 0 && fallback < 0)
         throw SceneError(at, "no material: put 'usemtl NAME' before it, or give " + path + " a \"material\"");
-      int material = fallback;
-      if (face.material >= 0) {
+      if (material < 0) {
         const std::string& name = obj.material_names[face.material];
-        std::vector<std::string> names;
-        material = -1;
-        for (std::size_t i = 0; i < out_.scene.materials.size() && material < 0; ++i)
-          if (out_.scene.materials[i].name == name) material = static_cast<int>(i);
-        for (const Material& m : out_.scene.materials) names.push_back(m.name);
-        if (material < 0)
-          throw SceneError(at, "its material '" + name.substr(0, 64) + "' (usemtl) is not among the materials of " +
-                                   schema_.file() + did_you_mean(name, names));
+        throw SceneError(at, "its material '" + name.substr(0, 64) + "' (usemtl) is not among the materials of " +
+                                 schema_.file() + did_you_mean(name, material_names()));
       }
       out_.polygons.push_back({face.polygon, material, shown + ":" + std::to_string(face.line), false});
     }
@@ -249,7 +259,8 @@ class SceneReader {
   }
 
   void quad_light(const JsonValue& v, const std::string& path) {
-    const Fields f = schema_.object(v, path, {{"corner", true}, {"edge_u", true}, {"edge_v", true}, {"intensity", true}});
+    const Fields f =
+        schema_.object(v, path, {{"corner", true}, {"edge_u", true}, {"edge_v", true}, {"intensity", true}});
     const QuadLight light{parallelogram(f, path, 0), intensity(f, path)};
     checked(v, path, [&] { out_.scene.add(light); });
   }
@@ -258,7 +269,11 @@ class SceneReader {
   SchemaReader schema_;
   SceneFile out_;
   const JsonValue* camera_at_ = nullptr;
+  // By name (a file may name many materials: no search through them all per shape).
+  std::unordered_map<std::string, int> material_index_;
+  // What the meshes have read so far: their limits hold for all of them together.
   std::size_t mesh_faces_ = 0;
+  std::uintmax_t mesh_bytes_ = 0;
 };
 
 }  // namespace
@@ -269,38 +284,5 @@ SceneFile read_scene_file(const fs::path& file) {
 }
 
 SceneFile read_scene_text(const std::string& text, const fs::path& file) { return SceneReader(file).read(text); }
-
-Scene ray_tracing_scene(const SceneFile& file, std::vector<std::string>& warnings) {
-  Scene s = file.scene;
-  for (const FilePolygon& p : file.polygons) {
-    if (p.from_quads) continue;
-    const auto& c = p.shape.corners;
-    s.add(Triangle{c[0], c[1], c[2], p.material});
-    if (p.shape.count == 4) s.add(Triangle{c[0], c[2], c[3], p.material});
-  }
-  warnings.insert(warnings.end(), file.warnings.begin(), file.warnings.end());
-  if (s.lights.empty() && s.area_lights.empty())
-    warnings.push_back(file.file + ": no point_lights or quad_lights, which are what light the ray tracer's scene: "
-                                   "it shows only what emits and the ambient light");
-  return s;
-}
-
-bool names_a_file(const std::string& choice) {
-  std::string lower = choice;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  return choice.find('/') != std::string::npos || (lower.size() > 5 && lower.ends_with(".json"));
-}
-
-Scene load_scene(const std::string& choice, std::vector<std::string>& warnings) {
-  if (names_a_file(choice)) return ray_tracing_scene(read_scene_file(choice), warnings);
-  const std::vector<std::string> names = scene_names();
-  if (std::find(names.begin(), names.end(), choice) == names.end()) {
-    std::string known;
-    for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
-    throw std::invalid_argument("unknown scene '" + choice.substr(0, 64) + "'" + did_you_mean(choice, names) +
-                                "; built-in scenes: " + known + "; or a scene file ending in .json");
-  }
-  return make_scene(choice);
-}
 
 }  // namespace gi

@@ -6,6 +6,15 @@
 
 namespace gi {
 
+namespace {
+
+// "2 items" or "a string": what a value that should be a triple is.
+std::string got(const JsonValue& v) {
+  return v.kind == JsonValue::Kind::Array ? std::to_string(v.items.size()) + " items" : kind_name(v.kind);
+}
+
+}  // namespace
+
 std::string number_text(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", v);
@@ -23,10 +32,9 @@ SchemaReader::Fields SchemaReader::object(const JsonValue& v, const std::string&
   if (v.kind != JsonValue::Kind::Object) fail(v, path, "expected an object {...}, got " + kind_name(v.kind));
   Fields fields;
   for (const JsonMember& m : v.members) {
-    const auto known = [&](std::string_view name) { return name == m.key; };
     const Key* key = nullptr;
     for (const Key& k : keys)
-      if (known(k.name)) key = &k;
+      if (k.name == m.key) key = &k;
     if (!key && m.key != "about") {
       std::vector<std::string> names;
       for (const Key& k : keys) names.emplace_back(k.name);
@@ -66,8 +74,7 @@ double SchemaReader::number(const JsonValue& v, const std::string& path, double 
 
 vec3 SchemaReader::point(const JsonValue& v, const std::string& path) const {
   if (v.kind != JsonValue::Kind::Array || v.items.size() != 3)
-    fail(v, path, "expected three numbers [x, y, z], got " +
-                      (v.kind == JsonValue::Kind::Array ? std::to_string(v.items.size()) + " items" : kind_name(v.kind)));
+    fail(v, path, "expected three numbers [x, y, z], got " + got(v));
   vec3 p;
   for (int i = 0; i < 3; ++i) p[i] = number(v.items[i], item_path(path, i), -max_coordinate, max_coordinate);
   return p;
@@ -76,8 +83,7 @@ vec3 SchemaReader::point(const JsonValue& v, const std::string& path) const {
 Color SchemaReader::colour(const JsonValue& v, const std::string& path) const {
   if (v.kind == JsonValue::Kind::Number) return Color(number(v, path, 0, 1e6));
   if (v.kind != JsonValue::Kind::Array || v.items.size() != 3)
-    fail(v, path, "expected a colour [r, g, b] or one number for a grey, got " +
-                      (v.kind == JsonValue::Kind::Array ? std::to_string(v.items.size()) + " items" : kind_name(v.kind)));
+    fail(v, path, "expected a colour [r, g, b] or one number for a grey, got " + got(v));
   Color c;
   for (int i = 0; i < 3; ++i) c[i] = number(v.items[i], item_path(path, i), 0, 1e6);
   return c;
