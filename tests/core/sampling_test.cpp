@@ -43,17 +43,6 @@ t::ChiSquare directions_test(const std::vector<vec3>& w, const std::function<dou
       t::expected_2d([&](vec2 zp) { return pdf(t::z_phi_to_direction(zp)); }, lo, hi, 10, 20, double(w.size())));
 }
 
-// The integral of a density per steradian over the sphere, by the midpoint rule on
-// 400 x 800 cells of (z, phi).
-double integral_over_sphere(const std::function<double(const vec3&)>& pdf) {
-  const int nz = 400, nphi = 800;
-  double sum = 0;
-  for (int i = 0; i < nz; ++i)
-    for (int j = 0; j < nphi; ++j)
-      sum += pdf(t::z_phi_to_direction({-1 + (i + 0.5) * 2.0 / nz, (j + 0.5) * 2 * gi::pi / nphi}));
-  return sum * (2.0 / nz) * (2 * gi::pi / nphi);
-}
-
 void expect_unit(const vec3& w) { ASSERT_NEAR(gi::length(w), 1.0, 1e-12); }
 
 void expect_round_trip(vec2 u, vec2 back) {
@@ -73,7 +62,7 @@ TEST(Sampling, UniformHemisphere) {
   }
   const auto pdf = [](const vec3& d) { return d.z >= 0 ? gi::uniform_hemisphere_pdf() : 0.0; };
   EXPECT_GT(directions_test(w, pdf).p_value, significance);
-  EXPECT_NEAR(integral_over_sphere(pdf), 1.0, 1e-3);
+  EXPECT_NEAR(t::integral_over_sphere(pdf), 1.0, 1e-3);
 }
 
 TEST(Sampling, CosineHemisphere) {
@@ -87,7 +76,7 @@ TEST(Sampling, CosineHemisphere) {
   const auto pdf = [](const vec3& d) { return gi::cosine_hemisphere_pdf(d.z); };
   const t::ChiSquare c = directions_test(w, pdf);
   EXPECT_GT(c.p_value, significance) << "chi-square " << c.statistic << " with " << c.degrees_of_freedom << " dof";
-  EXPECT_NEAR(integral_over_sphere(pdf), 1.0, 1e-3);
+  EXPECT_NEAR(t::integral_over_sphere(pdf), 1.0, 1e-3);
   EXPECT_EQ(gi::cosine_hemisphere_pdf(-0.3), 0.0);
   EXPECT_DOUBLE_EQ(gi::cosine_hemisphere_pdf(1.0), 1 / gi::pi);
 }
@@ -101,7 +90,7 @@ TEST(Sampling, UniformSphere) {
   }
   const auto pdf = [](const vec3&) { return gi::uniform_sphere_pdf(); };
   EXPECT_GT(directions_test(w, pdf).p_value, significance);
-  EXPECT_NEAR(integral_over_sphere(pdf), 1.0, 1e-3);
+  EXPECT_NEAR(t::integral_over_sphere(pdf), 1.0, 1e-3);
 }
 
 TEST(Sampling, UniformCone) {
@@ -116,7 +105,7 @@ TEST(Sampling, UniformCone) {
   }
   const auto pdf = [&](const vec3& d) { return d.z >= cos_max ? gi::uniform_cone_pdf(cos_max) : 0.0; };
   EXPECT_GT(directions_test(w, pdf).p_value, significance);
-  EXPECT_NEAR(integral_over_sphere(pdf), 1.0, 2e-3);
+  EXPECT_NEAR(t::integral_over_sphere(pdf), 1.0, 2e-3);
 }
 
 TEST(Sampling, UniformTriangle) {

@@ -23,16 +23,6 @@ vec3 direction(double theta, double phi, const vec3& axis) {
   return std::cos(theta) * axis + std::sin(theta) * (std::cos(phi) * tangent + std::sin(phi) * bitangent);
 }
 
-// The integral over the sphere of a function of direction, midpoint rule in (z, phi).
-double over_sphere(const std::function<double(const vec3&)>& g) {
-  const int nz = 400, nphi = 400;
-  double sum = 0;
-  for (int i = 0; i < nz; ++i)
-    for (int j = 0; j < nphi; ++j)
-      sum += g(t::z_phi_to_direction({-1 + (i + 0.5) * 2.0 / nz, (j + 0.5) * 2 * gi::pi / nphi}));
-  return sum * (2.0 / nz) * (2 * gi::pi / nphi);
-}
-
 }  // namespace
 
 TEST(Bsdf, LambertianSamplesFollowItsDensity) {
@@ -65,9 +55,10 @@ TEST(Bsdf, LambertianSamplesFollowItsDensity) {
 
 TEST(Bsdf, LambertianDensityIntegratesToOneAndEnergyToRho) {
   const vec3 wo = direction(1.1, 2.0, n);
-  EXPECT_NEAR(over_sphere([&](const vec3& wi) { return gi::bsdf_pdf(lambert, n, wo, wi); }), 1.0, 1e-3);
+  EXPECT_NEAR(t::integral_over_sphere([&](const vec3& wi) { return gi::bsdf_pdf(lambert, n, wo, wi); }), 1.0, 1e-3);
   // The directional albedo int f |cos| dw_i is rho: no more leaves than arrives.
-  EXPECT_NEAR(over_sphere([&](const vec3& wi) { return gi::bsdf_f(lambert, n, wo, wi).x * std::abs(gi::dot(n, wi)); }),
+  EXPECT_NEAR(t::integral_over_sphere(
+                  [&](const vec3& wi) { return gi::bsdf_f(lambert, n, wo, wi).x * std::abs(gi::dot(n, wi)); }),
               0.8, 1e-3);
 }
 

@@ -121,6 +121,13 @@ vec3 z_phi_to_direction(vec2 z_phi) {
   return {r * std::cos(z_phi.y), r * std::sin(z_phi.y), z_phi.x};
 }
 
+double integral_over_sphere(const std::function<double(const vec3&)>& g, int nz, int nphi) {
+  double sum = 0;
+  for (int i = 0; i < nz; ++i)
+    for (int j = 0; j < nphi; ++j) sum += g(z_phi_to_direction({-1 + (i + 0.5) * 2.0 / nz, (j + 0.5) * 2 * pi / nphi}));
+  return sum * (2.0 / nz) * (2 * pi / nphi);
+}
+
 Estimate estimate(const std::vector<double>& values) {
   const double n = double(values.size());
   double sum = 0, sum2 = 0;

@@ -50,6 +50,10 @@ std::vector<double> expected_2d(const std::function<double(vec2)>& density, vec2
 vec2 direction_to_z_phi(const vec3& w);
 vec3 z_phi_to_direction(vec2 z_phi);
 
+// The integral over the sphere of a function of direction (a density's, to check it is
+// 1), by the midpoint rule on nz x nphi cells of (z, phi).
+double integral_over_sphere(const std::function<double(const vec3&)>& g, int nz = 400, int nphi = 800);
+
 // The mean of n independent estimates and its standard error sqrt(s^2 / n): a test
 // then asks whether a known answer lies within a few standard errors (a t-test; with
 // n >= 20 estimates, 4.5 standard errors are exceeded by chance about once in 10^4

@@ -44,30 +44,20 @@ void write_atomically(const std::filesystem::path& file, Write write) {
   std::filesystem::rename(temporary, file);
 }
 
-// A block's mean, and its standard error from its pixels' (independent) errors.
-Image block_means(const Image& image, int block) {
+// Each block's mean, or (of a picture of standard errors) the standard error of that
+// mean: its pixels' errors are independent, so sqrt(sum se^2) / block^2.
+enum class Over { Means, Errors };
+Image over_blocks(const Image& image, int block, Over what) {
   Image out(image.width / block, image.height / block);
   for (int y = 0; y < out.height; ++y)
     for (int x = 0; x < out.width; ++x) {
       glm::dvec3 sum(0.0);
       for (int j = 0; j < block; ++j)
-        for (int i = 0; i < block; ++i) sum += glm::dvec3(image.at(x * block + i, y * block + j));
-      out.at(x, y) = Pixel(sum / double(block * block));
-    }
-  return out;
-}
-
-Image block_errors(const Image& standard_error, int block) {
-  Image out(standard_error.width / block, standard_error.height / block);
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x) {
-      glm::dvec3 sum(0.0);
-      for (int j = 0; j < block; ++j)
         for (int i = 0; i < block; ++i) {
-          const glm::dvec3 e(standard_error.at(x * block + i, y * block + j));
-          sum += e * e;
+          const glm::dvec3 v(image.at(x * block + i, y * block + j));
+          sum += what == Over::Means ? v : v * v;
         }
-      out.at(x, y) = Pixel(glm::sqrt(sum) / double(block * block));
+      out.at(x, y) = Pixel((what == Over::Means ? sum : glm::sqrt(sum)) / double(block * block));
     }
   return out;
 }
@@ -217,7 +207,7 @@ PathReference combine(const PathReference& a, const PathReference& b) {
 double relative_rms_error(const Image& test, const Image& reference, int block) {
   if (!test.same_size(reference)) throw std::invalid_argument("relative RMS error: the images differ in size");
   check_block(reference, block);
-  const Image t = block_means(test, block), r = block_means(reference, block);
+  const Image t = over_blocks(test, block, Over::Means), r = over_blocks(reference, block, Over::Means);
   Image difference(t.width, t.height);
   for (std::size_t i = 0; i < t.pixels.size(); ++i) difference.pixels[i] = t.pixels[i] - r.pixels[i];
   return relative_rms(difference, r);
@@ -225,14 +215,15 @@ double relative_rms_error(const Image& test, const Image& reference, int block) 
 
 double relative_standard_error(const PathReference& reference, int block) {
   check_block(reference.mean, block);
-  return relative_rms(block_errors(reference.standard_error, block), block_means(reference.mean, block));
+  return relative_rms(over_blocks(reference.standard_error, block, Over::Errors),
+                      over_blocks(reference.mean, block, Over::Means));
 }
 
 PathReference downsample(const PathReference& reference, int factor) {
   check_block(reference.mean, factor);
   PathReference r = reference;
-  r.mean = block_means(reference.mean, factor);
-  r.standard_error = block_errors(reference.standard_error, factor);
+  r.mean = over_blocks(reference.mean, factor, Over::Means);
+  r.standard_error = over_blocks(reference.standard_error, factor, Over::Errors);
   return r;
 }
 
