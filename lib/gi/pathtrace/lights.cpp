@@ -27,10 +27,12 @@ Lights find_lights(Scene& scene) {
     if (emits(scene.materials[p.material]))
       throw std::invalid_argument("an emitting plane has infinite power: make the light a quad or a sphere");
   Lights lights;
+  std::vector<int> materials;  // each light's
   // Each emitter gets its own copy of its material, so that hit.material names the light.
   const auto add = [&](Light::Shape shape, int index, int& material, double area) {
     const Material copy = scene.materials[material];
     material = scene.add(copy);
+    materials.push_back(material);
     lights.lights.push_back({shape, index, copy.emission, area});
   };
   for (std::size_t i = 0; i < scene.triangles.size(); ++i)
@@ -47,12 +49,9 @@ Lights find_lights(Scene& scene) {
   lights.of_material.assign(scene.materials.size(), -1);
   std::vector<double> power;
   for (std::size_t k = 0; k < lights.lights.size(); ++k) {
-    const Light& light = lights.lights[k];
-    const int material = light.shape == Light::Shape::Triangle ? scene.triangles[light.index].material
-                         : light.shape == Light::Shape::Quad   ? scene.quads[light.index].material
-                                                               : scene.spheres[light.index].material;
-    lights.of_material[material] = static_cast<int>(k);
-    power.push_back(pi * light.area * std::max(luminance(light.radiance), 1e-6 * max_component(light.radiance)));
+    lights.of_material[materials[k]] = static_cast<int>(k);
+    // pi A L_e: > 0, since every channel weighs in the luminance
+    power.push_back(pi * lights.lights[k].area * luminance(lights.lights[k].radiance));
   }
   if (!power.empty()) lights.choice = make_discrete_distribution(power);
   return lights;

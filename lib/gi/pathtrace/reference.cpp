@@ -64,9 +64,9 @@ Image over_blocks(const Image& image, int block, Over what) {
 
 // sqrt(mean over values with r above the cut of (a / r)^2).
 double relative_rms(const Image& a, const Image& r) {
-  double mean = 0;
-  for (const Pixel& p : r.pixels) mean += (double(p.x) + p.y + p.z) / 3;
-  const double cut = 1e-3 * mean / double(r.pixels.size());
+  double total = 0;
+  for (const Pixel& p : r.pixels) total += (double(p.x) + p.y + p.z) / 3;
+  const double cut = 1e-3 * total / double(r.pixels.size());  // 1e-3 of the mean
   double sum = 0;
   long long count = 0;
   for (std::size_t i = 0; i < r.pixels.size(); ++i)
