@@ -1,7 +1,7 @@
 // 14_make_reference: renders (or extends) a converged path-traced reference and keeps it
 // on disk with its error bar (gi/pathtrace/reference.hpp). Not a lesson: lesson 14 and
 // the radiosity lessons read what it writes. The Cornell box reference they share:
-//   14_make_reference --scene cornell --width 256 --height 256 --batch-spp 4096 --batches 16
+//   14_make_reference --scene cornell --width 256 --height 256 --batch-spp 4096 --batches 12
 //       --out lessons/references/cornell_256x256
 // Each batch draws from its own seed and is pooled with what is already there, then the
 // files are rewritten: stop it at any time and the last finished batch counts; run it

@@ -109,3 +109,44 @@ TEST(Reference, RelativeErrorsAndDownsampling) {
   EXPECT_NEAR(half.mean.at(0, 0).x, (2 + 2 + 2 + 6) / 4.0, 1e-6);
   EXPECT_NEAR(half.standard_error.at(0, 0).x, std::sqrt(4 * 0.04) / 4, 1e-6) << "independent errors: sqrt(sum) / 4";
 }
+
+TEST(Reference, TheCornellBoxReferenceInTheTreeIsTheScenesPictureAndConverged) {
+  // lessons/references/cornell_256x256: made by 14_make_reference for the Cornell box as
+  // radiosity solves it. If the box has changed (reflectances, light, camera), this
+  // fails until it is rendered again:
+  //   build/release/bin/14_make_reference --scene cornell --width 256 --height 256
+  //       --batch-spp 4096 --batches 12 --out lessons/references/cornell_256x256
+  // (about 25 minutes on two idle cores; run again to make it longer).
+  const gi::PathScene scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
+  const std::string fingerprint = gi::reference_fingerprint(scene, {}, 256, 256);
+  std::string why;
+  const auto reference =
+      gi::load_reference(fs::path(GI_SOURCE_DIR) / "lessons/references/cornell_256x256", fingerprint, &why);
+  ASSERT_TRUE(reference) << why << "\nrender it again (see this test's comment)";
+  EXPECT_GE(reference->spp, 32768);
+  EXPECT_LT(gi::relative_standard_error(*reference, 1), 0.01) << "per pixel";
+  EXPECT_LT(gi::relative_standard_error(*reference, 8), 0.002) << "per 8x8 block";
+
+  // An independent check that the picture is right: light sampling alone (the reference
+  // is MIS), from another seed, at 64 x 64, against the reference averaged to that size.
+  // Chi-square of the differences over their standard errors, 4 x 4 blocks and
+  // channels: a false failure one time in 1000.
+  gi::Film film = gi::make_film(64, 64, 777);
+  gi::PathSettings lights;
+  lights.strategy = gi::Strategy::Lights;
+  gi::render_pass(film, scene, lights, 128, 0);
+  const gi::PathReference test = gi::downsample(gi::reference_from_film(film, "cornell", "", 777, lights, 0), 4);
+  const gi::PathReference truth = gi::downsample(*reference, 16);
+  std::vector<double> z2, ones;
+  for (std::size_t i = 0; i < truth.mean.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double d = test.mean.pixels[i][c] - truth.mean.pixels[i][c];
+      const double se2 = double(test.standard_error.pixels[i][c]) * test.standard_error.pixels[i][c] +
+                         double(truth.standard_error.pixels[i][c]) * truth.standard_error.pixels[i][c];
+      if (se2 > 0) z2.push_back(d * d / se2);
+    }
+  double statistic = 0;
+  for (double z : z2) statistic += z;
+  EXPECT_GT(t::chi_square_p_value(statistic, int(z2.size())), 0.001)
+      << "chi-square " << statistic << " for " << z2.size() << " blocks and channels";
+}

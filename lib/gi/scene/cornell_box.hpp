@@ -16,7 +16,7 @@ namespace gi {
 //    left, as in the photographs;
 //  - the floor, ceiling and left wall are not rectangles (x runs 549.6 to 556), kept
 //    as given: every surface is a general quadrilateral, and the red wall is slightly
-//    twisted (its corners are up to ~2 mm off one plane);
+//    twisted (its fourth corner is 3.2 mm off the plane of the other three);
 //  - the light is flush with the ceiling; the ceiling is cut into four pieces around
 //    it so that nothing overlaps;
 //  - the box is open at the front (z = 0), where the camera looks in. `closed` adds a
