@@ -1,11 +1,12 @@
 #include "gi/pathtrace/reference.hpp"
 
-#include <cstring>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "gi/core/atomic_file.hpp"
 #include "gi/image/image_io.hpp"
 
 namespace gi {
@@ -33,15 +34,6 @@ struct Fingerprint {
 
 std::filesystem::path with_suffix(const std::filesystem::path& stem, const std::string& suffix) {
   return stem.parent_path() / (stem.filename().string() + suffix);
-}
-
-// Written beside the target and renamed over it: a reader sees the old file or the
-// new one, never half of one.
-template <class Write>
-void write_atomically(const std::filesystem::path& file, Write write) {
-  const std::filesystem::path temporary = with_suffix(file, ".partial");
-  write(temporary);
-  std::filesystem::rename(temporary, file);
 }
 
 // Each block's mean, or (of a picture of standard errors) the standard error of that
@@ -114,10 +106,9 @@ void save_reference(const PathReference& r, const std::filesystem::path& stem) {
   const std::filesystem::path text = with_suffix(stem, ".txt");
   if (!stem.parent_path().empty()) std::filesystem::create_directories(stem.parent_path());
   std::filesystem::remove(text);  // the set is invalid until the new text file is in place
-  write_atomically(with_suffix(stem, ".pfm"), [&](const auto& file) { write_pfm(r.mean, file); });
-  write_atomically(with_suffix(stem, "_stderr.pfm"), [&](const auto& file) { write_pfm(r.standard_error, file); });
-  write_atomically(text, [&](const std::filesystem::path& file) {
-    std::ofstream out(file);
+  write_pfm(r.mean, with_suffix(stem, ".pfm"));  // each file whole or not at all (atomic_file.hpp)
+  write_pfm(r.standard_error, with_suffix(stem, "_stderr.pfm"));
+  write_atomically(text, [&](std::ostream& out) {
     out << "# A path-traced reference (gi/pathtrace/reference.hpp): mean in .pfm, standard error in _stderr.pfm\n"
         << "scene " << r.scene << "\nfingerprint " << r.fingerprint << "\nwidth " << r.mean.width << "\nheight "
         << r.mean.height << "\nspp " << r.spp << "\nseed " << r.seed << "\nbatches " << r.batches << "\nstrategy "
@@ -128,8 +119,6 @@ void save_reference(const PathReference& r, const std::filesystem::path& stem) {
       if (r.mean.width % block == 0 && r.mean.height % block == 0)
         out << "relative_standard_error_" << block << "x" << block << "_blocks " << relative_standard_error(r, block)
             << '\n';
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + file.string());
   });
 }
 
@@ -140,8 +129,12 @@ std::optional<PathReference> load_reference(const std::filesystem::path& stem, c
     return std::nullopt;
   };
   const std::filesystem::path text = with_suffix(stem, ".txt");
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(text, error)) return refuse("no file " + text.string());
+  // The text is a few hundred bytes; one a hostile hand made large is refused unread.
+  if (std::filesystem::file_size(text, error) > 1 << 16 || error) return refuse(text.string() + " is too large");
   std::ifstream in(text);
-  if (!in) return refuse("no file " + text.string());
+  if (!in) return refuse("cannot read " + text.string());
   std::map<std::string, std::string> fields;
   for (std::string line; std::getline(in, line) && fields.size() < 100;) {
     if (line.empty() || line[0] == '#') continue;
@@ -168,7 +161,6 @@ std::optional<PathReference> load_reference(const std::filesystem::path& stem, c
     const auto expected_bytes = static_cast<std::uintmax_t>(width) * height * sizeof(Pixel);
     for (const char* suffix : {".pfm", "_stderr.pfm"}) {
       const std::filesystem::path file = with_suffix(stem, suffix);
-      std::error_code error;
       const std::uintmax_t size = std::filesystem::file_size(file, error);
       if (error || size < expected_bytes || size > expected_bytes + 64)
         return refuse(file.string() + " is missing or not " + std::to_string(width) + "x" + std::to_string(height));
@@ -177,6 +169,12 @@ std::optional<PathReference> load_reference(const std::filesystem::path& stem, c
     r.standard_error = read_pfm(with_suffix(stem, "_stderr.pfm"));
     if (r.mean.width != width || r.mean.height != height || !r.mean.same_size(r.standard_error))
       return refuse(stem.string() + ": the pictures' sizes do not match " + text.string());
+    // Radiance and its standard error are finite and not negative: a damaged file
+    // must not turn into a garbage error figure.
+    for (const Image* image : {&r.mean, &r.standard_error})
+      for (const Pixel& p : image->pixels)
+        if (!(p.x >= 0 && p.y >= 0 && p.z >= 0 && std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)))
+          return refuse(stem.string() + ": a pixel is negative or not a number");
   } catch (const std::out_of_range&) {
     return refuse(text.string() + ": a field is missing or out of range");
   } catch (const std::exception& e) {
