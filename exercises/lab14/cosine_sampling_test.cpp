@@ -7,6 +7,7 @@
 
 #include "gi/core/rng.hpp"
 #include "gi/core/sampling.hpp"
+#include "support/print.hpp"
 #include "support/statistics.hpp"
 
 using gi::vec2;
@@ -79,7 +80,7 @@ TEST(Ex14_2_CosinePdf, IsCosineOverPi) {
 TEST(Ex14_2_CosinePdf, ZeroBelowTheHorizon) {
   EXPECT_EQ(gi::cosine_hemisphere_pdf(-0.4), 0.0) << "no sample is ever drawn below the surface: density 0 there "
                                                      "(not |cos| / pi)";
-  EXPECT_EQ(gi::cosine_hemisphere_pdf(0.0), 0.0);
+  EXPECT_EQ(gi::cosine_hemisphere_pdf(0.0), 0.0) << "on the horizon cos(theta) = 0: density 0";
 }
 
 TEST(Ex14_2_CosinePdf, IntegratesToOneOverTheHemisphere) {

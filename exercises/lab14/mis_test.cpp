@@ -9,6 +9,7 @@
 #include "gi/core/sampling.hpp"
 #include "gi/pathtrace/film.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
+#include "support/print.hpp"
 #include "support/statistics.hpp"
 
 TEST(Ex14_5_PowerHeuristic, SquaresTheDensities) {
@@ -19,7 +20,7 @@ TEST(Ex14_5_PowerHeuristic, SquaresTheDensities) {
 
 TEST(Ex14_5_PowerHeuristic, CountsTheSamples) {
   EXPECT_NEAR(gi::power_heuristic(2, 1.0, 1, 1.0), 0.8, 1e-12) << "n_f = 2 samples: (2 p)^2 / ((2 p)^2 + p^2)";
-  EXPECT_NEAR(gi::power_heuristic(1, 1.0, 3, 1.0), 0.1, 1e-12);
+  EXPECT_NEAR(gi::power_heuristic(1, 1.0, 3, 1.0), 0.1, 1e-12) << "n_g = 3 samples: p^2 / (p^2 + (3 p)^2) = 1 / 10";
 }
 
 TEST(Ex14_5_PowerHeuristic, TheTwoWeightsAddUpToOne) {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "gi/core/rng.hpp"
+#include "support/print.hpp"
 #include "support/statistics.hpp"
 
 using gi::vec3;
@@ -43,7 +44,7 @@ TEST(Ex14_4_NextEvent, DirectionAndDistance) {
 TEST(Ex14_4_NextEvent, ConvertsTheAreaDensityToSolidAngle) {
   const gi::DirectSample s = gi::next_event_estimate(rho, x, n, wo, y);
   const Geometry g = geometry();
-  ASSERT_GT(g.cos_y, 0);
+  ASSERT_GT(g.cos_y, 0) << "the test's light faces x (a fault of the test, not yours)";
   EXPECT_NEAR(s.p_light, y.pdf_area * g.d2 / g.cos_y, 1e-9)
       << "p_light is per steradian: p_A |y - x|^2 / cos(theta_y), with cos(theta_y) = n_y . (x - y) / |x - y| "
          "(the point was drawn per unit area; use area_to_solid_angle)";

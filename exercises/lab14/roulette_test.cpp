@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/print.hpp"
+
 using gi::Color;
 
 TEST(Ex14_3_Roulette, BrightPathsAlwaysGoOn) {
@@ -23,10 +25,10 @@ TEST(Ex14_3_Roulette, GoesOnWithProbabilityTheLargestComponent) {
 
 TEST(Ex14_3_Roulette, SurvivorsCarryBetaOverQ) {
   Color beta(0.3, 0.1, 0.05);
-  ASSERT_TRUE(gi::russian_roulette(beta, 0.1));
+  ASSERT_TRUE(gi::russian_roulette(beta, 0.1)) << "u = 0.1 < q = 0.3: the path goes on";
   EXPECT_NEAR(beta.x, 1.0, 1e-12) << "a survivor stands for the paths that were ended: divide by q = 0.3";
-  EXPECT_NEAR(beta.y, 0.1 / 0.3, 1e-12);
-  EXPECT_NEAR(beta.z, 0.05 / 0.3, 1e-12);
+  EXPECT_NEAR(beta.y, 0.1 / 0.3, 1e-12) << "every channel is divided by the same q = 0.3";
+  EXPECT_NEAR(beta.z, 0.05 / 0.3, 1e-12) << "every channel is divided by the same q = 0.3";
 }
 
 TEST(Ex14_3_Roulette, UnbiasedOnAverage) {
@@ -42,7 +44,7 @@ TEST(Ex14_3_Roulette, UnbiasedOnAverage) {
   EXPECT_NEAR(mean.x, 0.4, 1e-4) << "the roulette biases the picture: survivors must carry beta / q, with q the "
                                     "probability of going on (the picture would be "
                                  << mean.x / 0.4 << " times as bright)";
-  EXPECT_NEAR(mean.z, 0.1, 1e-4);
+  EXPECT_NEAR(mean.z, 0.1, 1e-4) << "the roulette biases the blue channel: every channel is divided by the one q";
 }
 
 TEST(Ex14_3_Roulette, APathThatCarriesNothingEnds) {
