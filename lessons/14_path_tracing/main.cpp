@@ -181,7 +181,7 @@ void picture_table(const std::vector<Snapshot>& mis, const gi::PathReference& re
   gi::Table table("Path tracing (MIS), " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                       ": a convergence study against the reference (the same estimator, many more samples)",
                   {{"spp"},
-                   {"seconds", 3},
+                   {"time (s)", 3},
                    {"Msamples/s", 2},
                    {"RMSE", 2, gi::Format::Scientific},
                    {"rel. RMS", 2, gi::Format::Scientific},
@@ -287,7 +287,7 @@ int main(int argc, char** argv) {
                          {{"scene"},
                           {"strategy"},
                           {"spp"},
-                          {"seconds", 3},
+                          {"time (s)", 3},
                           {"RMSE", 2, gi::Format::Scientific},
                           {"efficiency 1/(RMSE^2 s)", 3, gi::Format::Scientific}});
     strategy_rows(strategies, s.scene, runs);
