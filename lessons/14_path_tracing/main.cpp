@@ -86,12 +86,13 @@ gi::PathReference stored_reference(const gi::PathScene& scene, const Settings& s
 }
 
 // Any other scene or size: a reference rendered here once and kept in the output folder,
-// reused while the scene's fingerprint and the sample count still match.
+// reused while the scene, the sample count and the path tracer's code are the same.
 gi::PathReference own_reference(const gi::PathScene& scene, const Settings& s, gi::Lesson& lesson) {
   const std::string stem = "reference_" + s.scene + "_" + std::to_string(s.width) + "x" + std::to_string(s.height) +
                            "_depth" + std::to_string(s.path.max_depth);
   const std::filesystem::path file = lesson.out() / stem;
-  const std::string fingerprint = gi::reference_fingerprint(scene, s.path, s.width, s.height);
+  const std::string fingerprint =
+      gi::reference_fingerprint(scene, s.path, s.width, s.height) + " code " + gi::path_code_fingerprint();
   std::string why = "none kept";
   auto cached = gi::load_reference(file, fingerprint, &why);
   if (cached && cached->spp != s.reference_spp) cached.reset(), why = "the kept one has another sample count";

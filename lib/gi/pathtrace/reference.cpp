@@ -154,7 +154,8 @@ std::optional<PathReference> load_reference(const std::filesystem::path& stem, c
     r.settings.max_depth = std::stoi(fields.at("max_depth"));
     r.settings.roulette_depth = std::stoi(fields.at("roulette_depth"));
     r.seconds = std::stod(fields.at("seconds"));
-    if (r.fingerprint != fingerprint) return refuse(text.string() + " was made for another scene or size");
+    if (r.fingerprint != fingerprint)
+      return refuse(text.string() + " was made for another scene, size or depth limit (or by other code)");
     if (width < 1 || height < 1 || width > 16384 || height > 16384 || r.spp < 2)
       return refuse(text.string() + ": size or sample count out of range");
     // The files must hold exactly the pixels announced, before anything is allocated.

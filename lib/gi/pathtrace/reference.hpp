@@ -35,6 +35,13 @@ struct PathReference {
 // and of what else fixes the converged picture.
 std::string reference_fingerprint(const PathScene& scene, const PathSettings& settings, int width, int height);
 
+// SHA-256 of the sources of the path tracer and every topic it uses, computed when the
+// library is built (cmake/CodeFingerprint.cmake). A reference a lesson renders and keeps
+// adds it to its fingerprint, so that changed code -- a student's lab 14 -- renders it
+// again. The stored Cornell box reference leaves it out: it is the truth a student's
+// code is measured against, whatever that code is.
+const char* path_code_fingerprint();
+
 // The reference from a film: its mean and the standard error of the mean.
 PathReference reference_from_film(const Film& film, const std::string& scene, const std::string& fingerprint,
                                   std::uint64_t seed, const PathSettings& settings, double seconds);
