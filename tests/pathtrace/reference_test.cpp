@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "gi/pathtrace/path_scenes.hpp"
@@ -75,6 +76,19 @@ TEST(Reference, StaleOrBrokenFilesAreRefused) {
   EXPECT_FALSE(gi::load_reference(stem, "abc", &why));
   std::ofstream(stem.string() + ".txt") << "\x01\x02 garbage\n";
   EXPECT_FALSE(gi::load_reference(stem, "abc", &why));
+  // A pixel that is not a number, or negative: refused, not turned into an error figure.
+  for (const float bad : {std::nanf(""), -1.0f}) {
+    gi::PathReference r = small_reference("abc");
+    r.mean.at(1, 0) = gi::Pixel(bad);
+    gi::save_reference(r, stem);
+    EXPECT_FALSE(gi::load_reference(stem, "abc", &why)) << bad;
+    EXPECT_NE(why.find("negative or not a number"), std::string::npos) << why;
+  }
+  // A text file a hostile hand made huge is refused unread.
+  gi::save_reference(small_reference("abc"), stem);
+  std::ofstream(stem.string() + ".txt", std::ios::app) << "# " << std::string(1 << 17, 'x') << '\n';
+  EXPECT_FALSE(gi::load_reference(stem, "abc", &why));
+  EXPECT_NE(why.find("too large"), std::string::npos) << why;
   // No text file: nothing is trusted, whatever pictures lie there.
   fs::remove(stem.string() + ".txt");
   EXPECT_FALSE(gi::load_reference(stem, "abc", &why));
@@ -115,8 +129,8 @@ TEST(Reference, TheCornellBoxReferenceInTheTreeIsTheScenesPictureAndConverged) {
   // radiosity solves it. If the box has changed (reflectances, light, camera), this
   // fails until it is rendered again:
   //   build/release/bin/14_make_reference --scene cornell --width 256 --height 256
-  //       --batch-spp 4096 --batches 12 --out lessons/references/cornell_256x256
-  // (about 25 minutes on two idle cores; run again to make it longer).
+  //       --batch-spp 4096 --batches 10 --out lessons/references
+  // (hours on two cores; it pools batches, so it can be stopped and run again).
   const gi::PathScene scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
   const std::string fingerprint = gi::reference_fingerprint(scene, {}, 256, 256);
   std::string why;
