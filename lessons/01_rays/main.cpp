@@ -10,12 +10,10 @@
 #include "gi/geometry/plane.hpp"
 #include "gi/geometry/sphere.hpp"
 #include "gi/image/diff.hpp"
-#include "gi/image/image_io.hpp"
+#include "gi/raytrace/render.hpp"
 #include "gi/report/lesson.hpp"
-#include "gi/report/options.hpp"
 #include "gi/report/table.hpp"
 #include "gi/scene/builtin_scenes.hpp"
-#include "gi/accel/world.hpp"
 
 namespace {
 
@@ -45,14 +43,14 @@ gi::Table worked_cases(const std::string& title, const Shape& shape, const std::
 }
 
 // The three pictures of what the eye rays hit.
-void draw_eye_rays(const gi::World& world, int width, int height, int threads, const std::string& out) {
+void draw_eye_rays(const gi::World& world, int width, int height, gi::Lesson& lesson) {
   const gi::CameraFrame frame = gi::camera_frame(world.scene.camera, width, height);
   gi::Image hit_or_miss(width, height), normals(width, height);
   std::vector<double> distance(static_cast<std::size_t>(width) * height, 0.0);
   // Depth in false colour: red near the eye through yellow, green and blue to black
   // at twice the distance to the point the camera looks at, and for misses.
   const double far = 2.0 * gi::length(world.scene.camera.look_at - world.scene.camera.eye);
-  gi::parallel_for(height, threads, [&](int y) {
+  gi::parallel_for(height, lesson.threads(), [&](int y) {
     for (int x = 0; x < width; ++x) {
       const auto hit = gi::closest_hit(world, gi::primary_ray(frame, x + 0.5, y + 0.5));
       if (!hit) continue;
@@ -61,27 +59,26 @@ void draw_eye_rays(const gi::World& world, int width, int height, int threads, c
       distance[static_cast<std::size_t>(y) * width + x] = std::max(0.0, 1.0 - hit->t / far);
     }
   });
-  gi::write_png(hit_or_miss, out + "/hit_or_miss.png");
-  gi::write_png(normals, out + "/normals.png");
-  gi::write_png(gi::false_colour(distance, width, height, 0.0, 1.0), out + "/depth.png");
+  const gi::View view{world.scene.camera, width, height, gi::describe_pixel_samples({})};
+  lesson.picture(hit_or_miss, "hit_or_miss", "white where an eye ray hits something", view);
+  lesson.picture(normals, "normals", "the surface normal n as the colour 0.5 n + 0.5", view);
+  lesson.diagram(gi::false_colour(distance, width, height, 0.0, 1.0), "depth",
+                 "distance to the hit in false colour, red near, black at twice the distance to look_at");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gi::run_lesson("01_rays", [&] {
-    gi::CommonOptions common;
-    std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
-    int width = 480, height = 360;
-    std::string scene_name = "spheres";
-    gi::Options options("01_rays", "Ray-sphere and ray-plane intersection: worked cases and eye-ray images.");
-    gi::add_common_options(options, common, "01_rays");
-    options.add("--width", width, "image width in pixels", 1, 8192)
-        .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
-        .add("--height", height, "image height in pixels", 1, 8192)
-        .add("--scene", scene_name, "scene to draw", gi::scene_names());
-    if (!options.parse(argc, argv)) return 0;
-
+  gi::Lesson lesson("01_rays", "Ray-sphere and ray-plane intersection: worked cases and eye-ray images.",
+                    {.seed = false});
+  std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
+  int width = 480, height = 360;
+  std::string scene_name = "spheres";
+  lesson.add_image_size(width, height);
+  lesson.options()
+      .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
+      .add("--scene", scene_name, "scene to draw", gi::scene_names());
+  return lesson.run(argc, argv, [&] {
     const gi::Sphere sphere{{0, 0, -5}, 1, 0};
     const gi::Table spheres = worked_cases("Ray-sphere: sphere at (0, 0, -5), radius 1", sphere,
         {{"head-on", {{0, 0, 0}, {0, 0, -1}}},
@@ -100,15 +97,12 @@ int main(int argc, char** argv) {
          {"in the plane", {{0, 0, 0}, {1, 0, 0}}},
          {"pointing away", {{0, 1, 0}, {0, 1, 0}}},
          {"grazing", {{0, 1, 0}, gi::normalize(gi::vec3(1, -1e-4, 0))}}});
-    spheres.print();
+    lesson.table(spheres, "ray_sphere");
     std::cout << '\n';
-    planes.print();
-    spheres.write_csv(common.out + "/ray_sphere.csv");
-    planes.write_csv(common.out + "/ray_plane.csv");
+    lesson.table(planes, "ray_plane");
 
     const gi::World world = gi::make_world(gi::make_scene(scene_name), gi::acceleration_from_name(accel));
-    draw_eye_rays(world, width, height, common.threads, common.out);
-    std::cout << "\nimages: " << common.out << "/{hit_or_miss,normals,depth}.png\n";
-    return 0;
+    draw_eye_rays(world, width, height, lesson);
+    lesson.say("\nimages: " + lesson.out().string() + "/{hit_or_miss,normals,depth}.png");
   });
 }

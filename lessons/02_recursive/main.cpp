@@ -10,12 +10,10 @@
 
 #include "gi/core/timer.hpp"
 #include "gi/image/diff.hpp"
-#include "gi/image/image_io.hpp"
 #include "gi/image/metrics.hpp"
 #include "gi/raytrace/render.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
-#include "gi/report/options.hpp"
 #include "gi/report/progress.hpp"
 #include "gi/report/table.hpp"
 #include "gi/scene/builtin_scenes.hpp"
@@ -58,9 +56,14 @@ struct Sweep {
   gi::Series series;
 };
 
+// The camera and pixel sampling of the lesson's pictures.
+gi::View view(const gi::World& world, const gi::RenderSettings& settings) {
+  return {world.scene.camera, settings.width, settings.height, gi::describe_pixel_samples(settings.sampling)};
+}
+
 // Depth limits 0..max_depth against the reference; writes each image.
 Sweep depth_sweep(const gi::World& world, gi::RenderSettings settings, int max_depth, int repeat,
-                  const gi::RenderResult& reference, const std::string& out, gi::Progress& progress) {
+                  const gi::RenderResult& reference, gi::Lesson& lesson, gi::Progress& progress) {
   Sweep sweep{gi::Table("Depth limits, scene " + world.scene.name + " (reference: depth " +
                             std::to_string(settings.trace.max_depth) + ")",
                         ray_columns("depth")),
@@ -71,8 +74,11 @@ Sweep depth_sweep(const gi::World& world, gi::RenderSettings settings, int max_d
     sweep.table.add_row(ray_row(depth, r, &reference.image));
     sweep.series.x.push_back(1e3 * r.seconds);
     sweep.series.y.push_back(gi::rmse(r.image, reference.image));
-    gi::write_png(r.image, out + "/depth_" + std::to_string(depth) + ".png");
-    if (depth == 1) gi::write_png(gi::difference_image(r.image, reference.image), out + "/diff_depth_1.png");
+    lesson.picture(r.image, "depth_" + std::to_string(depth), "depth limit " + std::to_string(depth),
+                   view(world, settings));
+    if (depth == 1)
+      lesson.diagram(gi::difference_image(r.image, reference.image), "diff_depth_1",
+                     "|depth 1 - reference| in false colour, red at the largest difference");
   }
   return sweep;
 }
@@ -103,28 +109,25 @@ gi::Table rays_per_depth(const gi::RayCounts& counts) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gi::run_lesson("02_recursive", [&] {
-    gi::CommonOptions common;
-    std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
-    gi::RenderSettings settings;
-    std::string scene_name = "whitted";
-    std::optional<int> single_depth;
-    int max_depth = 8, reference_depth = 30, repeat = 3;
-    gi::Options options("02_recursive",
-                        "Whitted ray tracing at depth limits 0..N and contribution thresholds, against a deep reference.");
-    gi::add_common_options(options, common, "02_recursive");
-    options.add("--width", settings.width, "image width in pixels", 1, 8192)
-        .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
-        .add("--height", settings.height, "image height in pixels", 1, 8192)
-        .add("--scene", scene_name, "scene to render", gi::scene_names())
-        .add("--max-depth", max_depth, "sweep depth limits 0..N", 0, 40)
-        .add("--reference-depth", reference_depth, "depth limit of the reference render", 1, 60)
-        .add_optional("--depth", single_depth, "render once at this depth limit instead of the sweep", 0, 60)
-        .add("--repeat", repeat, "renders per measurement; the median time is reported", 1, 50);
-    if (!options.parse(argc, argv)) return 0;
-    settings.threads = common.threads;
+  gi::Lesson lesson("02_recursive",
+                    "Whitted ray tracing at depth limits 0..N and contribution thresholds, against a deep reference.",
+                    {.seed = false});
+  std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
+  gi::RenderSettings settings;
+  std::string scene_name = "whitted";
+  std::optional<int> single_depth;
+  int max_depth = 8, reference_depth = 30, repeat = 3;
+  lesson.add_image_size(settings.width, settings.height);
+  lesson.options()
+      .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
+      .add("--scene", scene_name, "scene to render", gi::scene_names())
+      .add("--max-depth", max_depth, "sweep depth limits 0..N", 0, 40)
+      .add("--reference-depth", reference_depth, "depth limit of the reference render", 1, 60)
+      .add_optional("--depth", single_depth, "render once at this depth limit instead of the sweep", 0, 60)
+      .add("--repeat", repeat, "renders per measurement; the median time is reported", 1, 50);
+  return lesson.run(argc, argv, [&] {
+    settings.threads = lesson.threads();
     const gi::World world = gi::make_world(gi::make_scene(scene_name), gi::acceleration_from_name(accel));
-    const std::string out = common.out;
 
     if (single_depth) {  // one render, for timing against another renderer
       settings.trace.max_depth = *single_depth;
@@ -134,9 +137,10 @@ int main(int argc, char** argv) {
                           std::to_string(repeat),
                       ray_columns("depth"));
       table.add_row(ray_row(*single_depth, r, nullptr));
-      table.print();
-      gi::write_png(r.image, out + "/" + scene_name + "_depth_" + std::to_string(*single_depth) + ".png");
-      return 0;
+      lesson.table(table, scene_name + "_depth_" + std::to_string(*single_depth));
+      lesson.picture(r.image, scene_name + "_depth_" + std::to_string(*single_depth),
+                     "scene " + scene_name + " at depth limit " + std::to_string(*single_depth), view(world, settings));
+      return;
     }
 
     const std::vector<double> thresholds{0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.003, 0.001};
@@ -144,23 +148,21 @@ int main(int argc, char** argv) {
     settings.trace.max_depth = reference_depth;
     const gi::RenderResult reference = gi::render(world, settings);
     progress.advance();
-    gi::write_png(reference.image, out + "/reference.png");
-    const Sweep depths = depth_sweep(world, settings, max_depth, repeat, reference, out, progress);
+    lesson.picture(reference.image, "reference", "the reference: depth limit " + std::to_string(reference_depth),
+                   view(world, settings));
+    const Sweep depths = depth_sweep(world, settings, max_depth, repeat, reference, lesson, progress);
     const Sweep cutoffs = threshold_sweep(world, settings, thresholds, repeat, reference, progress);
     progress.finish();
 
-    const gi::Table per_depth = rays_per_depth(reference.counts);
-    for (const gi::Table* table : {&depths.table, &per_depth, &cutoffs.table}) {
-      table->print();
-      std::cout << '\n';
-    }
-    depths.table.write_csv(out + "/depth_limits.csv");
-    per_depth.write_csv(out + "/rays_per_depth.csv");
-    cutoffs.table.write_csv(out + "/thresholds.csv");
+    lesson.table(depths.table, "depth_limits");
+    std::cout << '\n';
+    lesson.table(rays_per_depth(reference.counts), "rays_per_depth");
+    std::cout << '\n';
+    lesson.table(cutoffs.table, "thresholds");
+    std::cout << '\n';
     const gi::Chart chart{"Stopping recursion: error against time (" + scene_name + ")", "render time (ms)",
                           "RMSE against the reference", false, true, {depths.series, cutoffs.series}};
-    gi::write_svg(chart, out + "/error_vs_time.svg");
-    std::cout << "images and charts: " << out << "/\n";
-    return 0;
+    lesson.chart(chart, "error_vs_time");
+    lesson.say("images and charts: " + lesson.out().string() + "/");
   });
 }

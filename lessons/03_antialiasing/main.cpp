@@ -8,12 +8,10 @@
 #include <vector>
 
 #include "gi/image/diff.hpp"
-#include "gi/image/image_io.hpp"
 #include "gi/image/metrics.hpp"
 #include "gi/raytrace/reference.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
-#include "gi/report/options.hpp"
 #include "gi/report/progress.hpp"
 #include "gi/report/table.hpp"
 #include "gi/scene/builtin_scenes.hpp"
@@ -37,16 +35,22 @@ std::vector<Method> methods() {
   return list;
 }
 
-// The reference: many jittered samples per pixel, computed once and kept in out/.
-gi::Image reference_image(const gi::World& world, gi::RenderSettings settings, int n, const std::string& out) {
+gi::View view(const gi::World& world, const gi::RenderSettings& settings) {
+  return {world.scene.camera, settings.width, settings.height, gi::describe_pixel_samples(settings.sampling)};
+}
+
+// The reference: many jittered samples per pixel, computed once and kept in the
+// output folder (reference.hpp says when it is trusted).
+gi::Image reference_image(const gi::World& world, gi::RenderSettings settings, int n, gi::Lesson& lesson) {
   settings.sampling = {gi::Sampler::Jittered, n};
   settings.seed += 1000;  // independent of the jittered runs being measured
-  const std::string file = out + "/reference_" + world.scene.name + "_" + std::to_string(settings.width) + "x" +
-                           std::to_string(settings.height) + "_jittered" + std::to_string(n) + "_depth" +
-                           std::to_string(settings.trace.max_depth) + "_seed" + std::to_string(settings.seed) + ".pfm";
-  const gi::Image reference = gi::cached_reference(world, settings, file);
-  gi::write_png(reference, out + "/reference.png");
-  return reference;
+  gi::CachedImage cached = gi::cached_reference(world, settings, "built-in scene " + world.scene.name, lesson.out());
+  if (cached.from_cache) lesson.say("reference: read from the cache " + cached.file.string() + "\n");
+  else if (cached.reason != "no cached image") lesson.say("reference: rendered again, " + cached.reason + "\n");
+  lesson.record(cached.file, gi::OutputKind::Cache, "the cached reference image, linear");
+  lesson.picture(cached.image, "reference", "the reference: jittered " + std::to_string(n) + "x" + std::to_string(n),
+                 view(world, settings));
+  return std::move(cached.image);
 }
 
 std::string slug(std::string label) {
@@ -57,30 +61,26 @@ std::string slug(std::string label) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gi::run_lesson("03_antialiasing", [&] {
-    gi::CommonOptions common;
-    std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
-    gi::RenderSettings settings;
-    settings.width = 320;
-    settings.height = 240;
-    settings.trace.max_depth = 3;
-    std::string scene_name = "aliasing";
-    int reference_n = 16;
-    gi::Options options("03_antialiasing", "Anti-aliasing: grid, random, jittered and adaptive supersampling "
-                                           "against a many-sample reference.");
-    gi::add_common_options(options, common, "03_antialiasing");
-    options.add("--width", settings.width, "image width in pixels", 16, 4096)
-        .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
-        .add("--height", settings.height, "image height in pixels", 16, 4096)
-        .add("--scene", scene_name, "scene to render", gi::scene_names())
-        .add("--depth", settings.trace.max_depth, "recursion depth limit", 0, 30)
-        .add("--reference-n", reference_n, "reference: jittered n x n samples per pixel", 4, 64);
-    if (!options.parse(argc, argv)) return 0;
-    settings.threads = common.threads;
-    settings.seed = common.seed;
+  gi::Lesson lesson("03_antialiasing", "Anti-aliasing: grid, random, jittered and adaptive supersampling "
+                                       "against a many-sample reference.");
+  std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
+  gi::RenderSettings settings;
+  settings.width = 320;
+  settings.height = 240;
+  settings.trace.max_depth = 3;
+  std::string scene_name = "aliasing";
+  int reference_n = 16;
+  lesson.add_image_size(settings.width, settings.height);
+  lesson.options()
+      .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
+      .add("--scene", scene_name, "scene to render", gi::scene_names())
+      .add("--depth", settings.trace.max_depth, "recursion depth limit", 0, 30)
+      .add("--reference-n", reference_n, "reference: jittered n x n samples per pixel", 4, 64);
+  return lesson.run(argc, argv, [&] {
+    settings.threads = lesson.threads();
+    settings.seed = lesson.seed();
     const gi::World world = gi::make_world(gi::make_scene(scene_name), gi::acceleration_from_name(accel));
-    const std::string out = common.out;
-    const gi::Image reference = reference_image(world, settings, reference_n, out);
+    const gi::Image reference = reference_image(world, settings, reference_n, lesson);
 
     gi::Table table("Anti-aliasing, scene " + scene_name + ", against jittered " + std::to_string(reference_n) + "x" +
                         std::to_string(reference_n),
@@ -115,31 +115,29 @@ int main(int argc, char** argv) {
         adaptive.add_row({m.label.substr(9), s.front(), s[s.size() / 2], s.back(), split});
         if (m.sampling.threshold == 0.05) {
           const std::vector<double> counts(r.samples.begin(), r.samples.end());
-          gi::write_png(gi::false_colour(counts, settings.width, settings.height, 0, s.back()),
-                        out + "/adaptive_samples_heatmap.png");
+          lesson.diagram(gi::false_colour(counts, settings.width, settings.height, 0, s.back()),
+                         "adaptive_samples_heatmap", "eye rays per pixel of adaptive 0.05, black 0 to red the most");
         }
       }
       const bool sixteen = m.sampling.n == 4 || m.sampling.sampler == gi::Sampler::Centre ||
                            (m.sampling.sampler == gi::Sampler::Adaptive && m.sampling.threshold == 0.05);
       if (sixteen) {
-        gi::write_png(r.image, out + "/" + slug(m.label) + ".png");
+        lesson.picture(r.image, slug(m.label), m.label, view(world, settings));
         crops.push_back(crop(r.image));
       }
     }
     progress.finish();
     crops.push_back(crop(reference));
-    gi::write_png(gi::side_by_side(crops), out + "/edge_crops.png");
+    lesson.diagram(gi::side_by_side(crops), "edge_crops",
+                   "a window at the horizon, 4x: centre, grid, random, jittered, adaptive 0.05, reference");
 
-    table.print();
+    lesson.table(table, "antialiasing");
     std::cout << '\n';
-    adaptive.print();
-    table.write_csv(out + "/antialiasing.csv");
-    adaptive.write_csv(out + "/adaptive.csv");
-    gi::write_svg({"Anti-aliasing: error against time (" + scene_name + ")", "render time (ms)",
-                   "RMSE against the reference", true, true, curves},
-                  out + "/error_vs_time.svg");
-    std::cout << "\nimages and charts: " << out << "/ (edge_crops.png: centre, grid, random, jittered, "
-              << "adaptive 0.05, reference)\n";
-    return 0;
+    lesson.table(adaptive, "adaptive");
+    lesson.chart({"Anti-aliasing: error against time (" + scene_name + ")", "render time (ms)",
+                  "RMSE against the reference", true, true, curves},
+                 "error_vs_time");
+    lesson.say("\nimages and charts: " + lesson.out().string() + "/ (edge_crops.png: centre, grid, random, jittered, " +
+               "adaptive 0.05, reference)");
   });
 }

@@ -2,18 +2,17 @@
 // rays. The penumbra grows with the light as similar triangles predict; the noise
 // falls with the number of shadow rays, faster when they are jittered.
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "gi/image/diff.hpp"
-#include "gi/image/image_io.hpp"
 #include "gi/image/metrics.hpp"
 #include "gi/raytrace/reference.hpp"
 #include "gi/raytrace/shading.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
-#include "gi/report/options.hpp"
 #include "gi/report/progress.hpp"
 #include "gi/report/table.hpp"
 #include "gi/scene/soft_shadow_scene.hpp"
@@ -47,28 +46,30 @@ double measured_penumbra(const gi::World& world, gi::Rng& rng) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gi::run_lesson("04_soft_shadows", [&] {
-    gi::CommonOptions common;
-    std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
-    gi::RenderSettings settings;
-    settings.width = 320;
-    settings.height = 240;
-    settings.trace.max_depth = 1;
-    double light_size = 1.0;
-    int reference_n = 24;
-    gi::Options options("04_soft_shadows", "Soft shadows: an area light sampled with random and jittered shadow "
-                                           "rays, against a many-ray reference; penumbra against light size.");
-    gi::add_common_options(options, common, "04_soft_shadows");
-    options.add("--width", settings.width, "image width in pixels", 16, 4096)
-        .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
-        .add("--height", settings.height, "image height in pixels", 16, 4096)
-        .add("--light-size", light_size, "side of the square area light (scene units)", 0.05, 4.0)
-        .add("--reference-n", reference_n, "reference: jittered n x n shadow rays per hit", 4, 64);
-    if (!options.parse(argc, argv)) return 0;
-    settings.threads = common.threads;
-    settings.seed = common.seed;
-    const std::string out = common.out;
-    gi::Rng rng(common.seed, 7);
+  gi::Lesson lesson("04_soft_shadows", "Soft shadows: an area light sampled with random and jittered shadow "
+                                       "rays, against a many-ray reference; penumbra against light size.");
+  std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
+  gi::RenderSettings settings;
+  settings.width = 320;
+  settings.height = 240;
+  settings.trace.max_depth = 1;
+  double light_size = 1.0;
+  int reference_n = 24;
+  lesson.add_image_size(settings.width, settings.height);
+  lesson.options()
+      .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
+      .add("--light-size", light_size, "side of the square area light (scene units)", 0.05, 4.0)
+      .add("--reference-n", reference_n, "reference: jittered n x n shadow rays per hit", 4, 64);
+  return lesson.run(argc, argv, [&] {
+    settings.threads = lesson.threads();
+    settings.seed = lesson.seed();
+    gi::Rng rng(lesson.seed(), 7);
+    const auto view = [&](const gi::World& world, const gi::RenderSettings& s) {
+      return gi::View{world.scene.camera, s.width, s.height,
+                      gi::describe_pixel_samples(s.sampling) + "; " + std::to_string(s.trace.soft_shadows.n) + " x " +
+                          std::to_string(s.trace.soft_shadows.n) + " " +
+                          gi::light_sampling_name(s.trace.soft_shadows.sampling) + " shadow rays per hit"};
+    };
 
     // 1. The penumbra against the light's size, measured on the floor and rendered.
     gi::Table penumbra("Penumbra of the box's edge against light size (similar triangles: w = s h / (H - h))",
@@ -80,21 +81,25 @@ int main(int argc, char** argv) {
       settings.trace.soft_shadows = {gi::LightSampling::Jittered, 8};
       penumbra.add_row({s, predicted, measured_penumbra(lit, rng), s == 0 ? 1 : 64});
       strip.push_back(gi::render(lit, settings).image);
-      gi::write_png(strip.back(), out + "/light_size_" + gi::format_number(s, 2, gi::Format::Fixed) + ".png");
+      const std::string size = gi::format_number(s, 2, gi::Format::Fixed);
+      lesson.picture(strip.back(), "light_size_" + size, "light of side " + size, view(lit, settings));
     }
-    gi::write_png(gi::side_by_side(strip), out + "/penumbra_by_light_size.png");
+    lesson.diagram(gi::side_by_side(strip), "penumbra_by_light_size", "light sizes 0, 0.25, 0.5, 1 and 2 side by side");
 
     // 2. Shadow rays per hit against noise and time, for one light size.
     const gi::World world = gi::make_world(gi::soft_shadow_scene(light_size), gi::acceleration_from_name(accel));
     gi::RenderSettings reference_settings = settings;
     reference_settings.trace.soft_shadows = {gi::LightSampling::Jittered, reference_n};
     reference_settings.seed += 1000;  // independent of the runs being measured
-    const gi::Image reference = gi::cached_reference(
-        world, reference_settings,
-        out + "/reference_" + std::to_string(settings.width) + "x" + std::to_string(settings.height) + "_light" +
-            gi::format_number(light_size, 3, gi::Format::Fixed) + "_jittered" + std::to_string(reference_n) +
-            "_seed" + std::to_string(reference_settings.seed) + ".pfm");
-    gi::write_png(reference, out + "/reference.png");
+    char scene_key[64];
+    std::snprintf(scene_key, sizeof scene_key, "soft_shadow_scene, light size %.17g", light_size);
+    const gi::CachedImage cached = gi::cached_reference(world, reference_settings, scene_key, lesson.out());
+    if (cached.from_cache) lesson.say("reference: read from the cache " + cached.file.string() + "\n");
+    else if (cached.reason != "no cached image") lesson.say("reference: rendered again, " + cached.reason + "\n");
+    lesson.record(cached.file, gi::OutputKind::Cache, "the cached reference image, linear");
+    const gi::Image& reference = cached.image;
+    lesson.picture(reference, "reference", "the reference: jittered " + std::to_string(reference_n) + "x" +
+                   std::to_string(reference_n) + " shadow rays", view(world, reference_settings));
 
     gi::Table table("Shadow rays per hit, light size " + gi::format_number(light_size, 2, gi::Format::Fixed) +
                         ", against jittered " + std::to_string(reference_n) + "x" + std::to_string(reference_n),
@@ -126,24 +131,22 @@ int main(int argc, char** argv) {
       }
       if (run.n == 1 || run.n == 4) {
         const std::string label = run.sampling == gi::LightSampling::Centre ? "hard" : name + "_" + std::to_string(run.n * run.n);
-        gi::write_png(r.image, out + "/" + label + ".png");
+        lesson.picture(r.image, label, label + " shadow rays per hit", view(world, settings));
         crops.push_back(crop(r.image));
       }
     }
     progress.finish();
     crops.push_back(crop(reference));
-    gi::write_png(gi::side_by_side(crops), out + "/shadow_crops.png");
+    lesson.diagram(gi::side_by_side(crops), "shadow_crops",
+                   "the box and its shadow, 3x: hard, random 1, random 16, jittered 1, jittered 16, reference");
 
-    penumbra.print();
+    lesson.table(penumbra, "penumbra");
     std::cout << '\n';
-    table.print();
-    penumbra.write_csv(out + "/penumbra.csv");
-    table.write_csv(out + "/shadow_rays.csv");
-    gi::write_svg({"Soft shadows: error against time", "render time (ms)", "RMSE against the reference", true, true,
-                   curves},
-                  out + "/error_vs_time.svg");
-    std::cout << "\nimages and charts: " << out << "/ (shadow_crops.png: hard, random 1, random 16, jittered 1, "
-              << "jittered 16, reference)\n";
-    return 0;
+    lesson.table(table, "shadow_rays");
+    lesson.chart({"Soft shadows: error against time", "render time (ms)", "RMSE against the reference", true, true,
+                  curves},
+                 "error_vs_time");
+    lesson.say("\nimages and charts: " + lesson.out().string() + "/ (shadow_crops.png: hard, random 1, random 16, " +
+               "jittered 1, jittered 16, reference)");
   });
 }

@@ -15,7 +15,6 @@
 #include "gi/raytrace/render.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
-#include "gi/report/options.hpp"
 #include "gi/report/progress.hpp"
 #include "gi/report/table.hpp"
 #include "gi/scene/benchmark_scenes.hpp"
@@ -58,7 +57,7 @@ Cast cast(const gi::World& world, const std::vector<gi::Ray>& rays, bool nearest
 }
 
 // 1. Brute force, a box per object and the BVH on ever more spheres.
-void spheres_table(int max_spheres, int width, int height, const std::string& out) {
+void spheres_table(int max_spheres, int width, int height, gi::Lesson& lesson) {
   gi::Table table("Nearest hit of " + std::to_string(width) + "x" + std::to_string(height) +
                       " eye rays among N random spheres, 1 thread",
                   {{"N"}, {"method"}, {"build ms", 2, gi::Format::Fixed}, {"rays"}, {"nodes/ray", 1}, {"box tests/ray", 1},
@@ -66,7 +65,7 @@ void spheres_table(int max_spheres, int width, int height, const std::string& ou
   std::vector<gi::Series> curves;
   for (const Method& m : methods) curves.push_back({m.label, {}, {}});
   for (int n = 10; n <= max_spheres; n *= 10) {
-    gi::Scene scene = gi::random_spheres(n, 1);
+    gi::Scene scene = gi::random_spheres(n, lesson.seed());
     double brute_us = 0;
     for (std::size_t i = 0; i < std::size(methods); ++i) {
       const Method& m = methods[i];
@@ -87,15 +86,14 @@ void spheres_table(int max_spheres, int width, int height, const std::string& ou
       curves[i].y.push_back(us);
     }
   }
-  table.print();
-  table.write_csv(out + "/spheres.csv");
-  gi::write_svg({"Time per ray against the number of spheres", "spheres N", "microseconds per eye ray", true, true,
-                 curves},
-                out + "/time_vs_n.svg");
+  lesson.table(table, "spheres");
+  lesson.chart({"Time per ray against the number of spheres", "spheres N", "microseconds per eye ray", true, true,
+                curves},
+               "time_vs_n");
 }
 
 // 2. The BVH on a room of quads, coherent and incoherent rays, one thread.
-void quad_room_table(int quads, const std::string& out) {
+void quad_room_table(int quads, gi::Lesson& lesson) {
   const gi::Timer build;
   const gi::World world = gi::make_world(gi::quad_room(quads));
   const double build_ms = build.milliseconds();
@@ -106,7 +104,7 @@ void quad_room_table(int quads, const std::string& out) {
                   {{"rays"}, {"query"}, {"count"}, {"ms", 1}, {"Mrays/s", 2}, {"nodes/ray", 1}, {"quad tests/ray", 1}});
   // The rays of the Embree comparison (05_embree_bench), so the figures compare:
   // any-hit rays are the random ones cut to 4 m, like shadow rays.
-  gi::Rng rng(1);
+  gi::Rng rng(lesson.seed());
   const std::vector<gi::Ray> coherent = gi::camera_rays(world.scene, 512, 512);
   const std::vector<gi::Ray> incoherent = gi::random_rays(gi::quad_room_interior(), 512 * 512, rng);
   std::vector<gi::Ray> shadow = incoherent;
@@ -123,12 +121,12 @@ void quad_room_table(int quads, const std::string& out) {
                    1e3 * c.seconds, 1e-6 * run.rays.size() / c.seconds, c.counts.nodes_visited * per,
                    c.counts.primitive_tests * per});
   }
-  table.print();
-  table.write_csv(out + "/quad_room.csv");
+  lesson.table(table, "quad_room");
 }
 
-// 3. Every rendering lesson's picture on 1, 2, ... threads, its sides times `scale`.
-void threads_table(double scale, const std::string& out) {
+// 3. Every rendering lesson's picture on 1, 2, ... threads (up to --threads, or
+// every core), its sides times `scale`.
+void threads_table(double scale, gi::Lesson& lesson) {
   struct Job {
     std::string name;
     gi::World world;
@@ -146,9 +144,9 @@ void threads_table(double scale, const std::string& out) {
   s.sampling = {}, s.trace.max_depth = 1, s.trace.soft_shadows = {gi::LightSampling::Jittered, 4};
   jobs.push_back({"04 soft shadows, 16 rays", gi::make_world(gi::soft_shadow_scene(1.0)), s});
   s.trace.soft_shadows = {};
-  jobs.push_back({"05 10 000 spheres", gi::make_world(gi::random_spheres(10000, 1)), s});
+  jobs.push_back({"05 10 000 spheres", gi::make_world(gi::random_spheres(10000, lesson.seed())), s});
 
-  const int cores = std::max(2u, std::thread::hardware_concurrency());
+  const int cores = lesson.threads() > 0 ? lesson.threads() : static_cast<int>(std::max(2u, std::thread::hardware_concurrency()));
   gi::Table table("Threads: render time (median of 5), speedup over 1 thread, efficiency (" + std::to_string(cores) +
                       " cores)",
                   {{"picture"}, {"threads"}, {"ms", 1}, {"speedup", 2}, {"efficiency %", 0}, {"same image"}});
@@ -171,32 +169,27 @@ void threads_table(double scale, const std::string& out) {
                      images[threads].pixels == images[1].pixels ? "yes" : "NO"});
     }
   }
-  table.print();
-  table.write_csv(out + "/threads.csv");
+  lesson.table(table, "threads");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gi::run_lesson("05_acceleration", [&] {
-    gi::CommonOptions common;
-    int width = 160, height = 120, max_spheres = 100000, room_quads = 100000;
-    double picture_scale = 1.0;
-    gi::Options options("05_acceleration", "Bounding volumes and threads: brute force, a box per object and a BVH "
-                                           "on 10 to 100 000 spheres; a room of quads; speedup per thread.");
-    gi::add_common_options(options, common, "05_acceleration");
-    options.add("--width", width, "eye-ray image width for the spheres table", 16, 4096)
-        .add("--height", height, "eye-ray image height for the spheres table", 16, 4096)
-        .add("--max-spheres", max_spheres, "largest sphere count (powers of 10 from 10)", 10, 1000000)
-        .add("--room-quads", room_quads, "quads in the room (about)", 100, 2000000)
-        .add("--picture-scale", picture_scale, "scales the pictures of the threads table", 0.05, 4.0);
-    if (!options.parse(argc, argv)) return 0;
-    spheres_table(max_spheres, width, height, common.out);
+  gi::Lesson lesson("05_acceleration", "Bounding volumes and threads: brute force, a box per object and a BVH "
+                                       "on 10 to 100 000 spheres; a room of quads; speedup per thread.");
+  int width = 160, height = 120, max_spheres = 100000, room_quads = 100000;
+  double picture_scale = 1.0;
+  lesson.add_image_size(width, height, "eye-ray image (spheres table)");
+  lesson.options()
+      .add("--max-spheres", max_spheres, "largest sphere count (powers of 10 from 10)", 10, 1000000)
+      .add("--room-quads", room_quads, "quads in the room (about)", 100, 2000000)
+      .add("--picture-scale", picture_scale, "scales the pictures of the threads table", 0.05, 4.0);
+  return lesson.run(argc, argv, [&] {
+    spheres_table(max_spheres, width, height, lesson);
     std::cout << '\n';
-    quad_room_table(room_quads, common.out);
+    quad_room_table(room_quads, lesson);
     std::cout << '\n';
-    threads_table(picture_scale, common.out);
-    std::cout << "\ntables and chart: " << common.out << "/\n";
-    return 0;
+    threads_table(picture_scale, lesson);
+    lesson.say("\ntables and chart: " + lesson.out().string() + "/");
   });
 }

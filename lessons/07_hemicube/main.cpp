@@ -1,6 +1,7 @@
 // Lesson 07 -- the hemicube. What a hemicube on a Cornell-box floor element sees (its
 // item buffer, unfolded), the delta form factors of its cells, the whole form-factor
-// matrix as a heat map, and how row sums and reciprocity improve with resolution.
+// matrix as a heat map, and how row sums, receivers smaller than a cell and
+// reciprocity change with resolution.
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -9,13 +10,11 @@
 
 #include "gi/core/timer.hpp"
 #include "gi/image/diff.hpp"
-#include "gi/image/image_io.hpp"
 #include "gi/radiosity/form_factor_hemicube.hpp"
 #include "gi/radiosity/form_factors.hpp"
 #include "gi/radiosity/hemicube_image.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/report/lesson.hpp"
-#include "gi/report/options.hpp"
 #include "gi/report/progress.hpp"
 #include "gi/report/table.hpp"
 
@@ -45,23 +44,25 @@ gi::Pixel element_colour(const gi::Mesh& mesh, int element) {
 }
 
 // 1. What one hemicube sees, and the weights of its cells.
-void hemicube_pictures(const gi::Mesh& mesh, int resolution, const std::string& out) {
+void hemicube_pictures(const gi::Mesh& mesh, int resolution, gi::Lesson& lesson) {
   const std::vector<gi::Polygon> shapes = gi::element_shapes(mesh);
   const int from = floor_element(mesh);
   gi::ItemBuffer buffer;
-  gi::render_item_buffer(shapes, shapes[from].centre, shapes[from].normal, resolution, buffer);
+  gi::render_item_buffer(shapes, gi::lifted_centre(shapes[from]), shapes[from].normal, resolution, buffer);
   const auto cell = [&](int column, int row) { return static_cast<std::size_t>(row) * resolution + column; };
   const gi::Image items = gi::unfold_hemicube(resolution, [&](gi::HemicubeFace face, int column, int row) {
     return element_colour(mesh, buffer.items[int(face)][cell(column, row)]);
   });
-  gi::write_png(gi::enlarge(items, std::max(1, 300 / resolution)), out + "/item_buffer.png");
+  lesson.diagram(gi::enlarge(items, std::max(1, 300 / resolution)), "item_buffer",
+                 "the item buffer of a floor element's hemicube, unfolded: each element in its wall's colour");
   const gi::HemicubeWeights w = gi::hemicube_weights(resolution);
   const double top = w.top[cell(resolution / 2, resolution / 2)];
   const gi::Image weights = gi::unfold_hemicube(resolution, [&](gi::HemicubeFace face, int column, int row) {
     const double dF = face == gi::HemicubeFace::Top ? w.top[cell(column, row)] : w.side[cell(column, row)];
     return gi::false_colour({dF}, 1, 1, 0, top).pixels[0];
   });
-  gi::write_png(gi::enlarge(weights, std::max(1, 300 / resolution)), out + "/delta_form_factors.png");
+  lesson.diagram(gi::enlarge(weights, std::max(1, 300 / resolution)), "delta_form_factors",
+                 "the delta form factor of every hemicube cell in false colour, red at the top face's centre");
 }
 
 // Reciprocity over the whole matrix: sum |A_i F_ij - A_j F_ji| / sum A_i F_ij. The
@@ -86,12 +87,13 @@ double row_error(const std::vector<double>& row, const std::vector<double>& refe
 
 // One row of a finely meshed box: the hemicube at resolution 100 against rays cast
 // from the element (Monte Carlo), both measured against a row of 4 million rays.
-void speed_table(const gi::Mesh& mesh, int element, const std::string& out) {
+void speed_table(const gi::Mesh& mesh, int element, gi::Lesson& lesson) {
   const gi::FormFactorScene scene(gi::element_shapes(mesh));
   const gi::Polygon& from = scene.polygons()[element];
   gi::FormFactorSettings reference_settings;
   reference_settings.method = gi::FormFactorMethod::MonteCarlo;
   reference_settings.rays = 4'000'000;
+  reference_settings.seed = lesson.seed();
   const std::vector<double> reference = gi::form_factor_row(scene, from, 999, reference_settings);
   gi::Table table("One row against " + std::to_string(scene.polygons().size()) +
                       " elements, one thread: time and L1 error against 4M rays (median of 7 rows)",
@@ -114,52 +116,51 @@ void speed_table(const gi::Mesh& mesh, int element, const std::string& out) {
     measure("rays (Monte Carlo)", rays, mc);
   }
   std::cout << '\n';
-  table.print();
-  table.write_csv(out + "/speed.csv");
+  lesson.table(table, "speed");
 }
 
 // 2. The matrix as a heat map of log10 F_ij.
-void matrix_picture(const gi::FormFactorMatrix& F, const std::string& out) {
+void matrix_picture(const gi::FormFactorMatrix& F, int resolution, gi::Lesson& lesson) {
   std::vector<double> logs(F.values.size());
   for (std::size_t k = 0; k < logs.size(); ++k) logs[k] = F.values[k] > 0 ? std::log10(F.values[k]) : -8;
-  gi::write_png(gi::false_colour(logs, F.n, F.n, -6, -1), out + "/form_factor_matrix.png");
+  lesson.diagram(gi::false_colour(logs, F.n, F.n, -6, -1), "form_factor_matrix",
+                 "log10 F_ij of the whole matrix (hemicube " + std::to_string(resolution) +
+                     "), black below 1e-6 to red at 0.1");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gi::run_lesson("07_hemicube", [&] {
-    gi::CommonOptions common;
-    int elements = 600, resolution = 100, max_resolution = 400, speed_elements = 10000;
-    gi::Options options("07_hemicube", "The hemicube: item buffer, delta form factors, the form-factor matrix, and "
-                                       "row sums and reciprocity against resolution (Cornell box).");
-    gi::add_common_options(options, common, "07_hemicube");
-    options.add("--elements", elements, "about how many elements to mesh the Cornell box into", 20, 5000)
-        .add("--resolution", resolution, "hemicube resolution for the pictures (even)", 10, 1000)
-        .add("--max-resolution", max_resolution, "largest resolution in the table", 10, 1000)
-        .add("--speed-elements", speed_elements, "elements for the one-row timing", 100, 100000);
-    if (!options.parse(argc, argv)) return 0;
-    if (resolution % 2 || max_resolution % 2) throw gi::OptionError("hemicube resolutions must be even");
-    const std::string& out = common.out;
+  gi::Lesson lesson("07_hemicube", "The hemicube: item buffer, delta form factors, the form-factor matrix, and "
+                                   "row sums and reciprocity against resolution (Cornell box).");
+  int elements = 600, resolution = 100, max_resolution = 400, speed_elements = 10000;
+  lesson.options()
+      .add("--elements", elements, "about how many elements to mesh the Cornell box into", 20, 5000)
+      .add("--resolution", resolution, "hemicube resolution for the pictures", 10, 1000, gi::even)
+      .add("--max-resolution", max_resolution, "largest resolution in the table", 10, 1000, gi::even)
+      .add("--speed-elements", speed_elements, "elements for the one-row timing", 100, 100000);
+  return lesson.run(argc, argv, [&] {
     const gi::RadiosityScene scene = gi::cornell_box(true);  // closed: rows must sum to 1
     const gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, elements, 1), 1});
     const std::vector<gi::Polygon> shapes = gi::element_shapes(mesh);
     std::vector<double> areas;
     for (const gi::Polygon& p : shapes) areas.push_back(p.area);
 
-    hemicube_pictures(mesh, resolution, out);
+    hemicube_pictures(mesh, resolution, lesson);
 
-    gi::Table table("Hemicube resolution against row sums (1 in a closed room) and reciprocity, closed Cornell box, " +
-                        std::to_string(shapes.size()) + " elements",
-                    {{"resolution"}, {"cells"}, {"matrix ms", 0}, {"buried"}, {"min row sum", 4}, {"max row sum", 4},
-                     {"mean |1 - sum|", 2, gi::Format::Scientific}, {"reciprocity", 2, gi::Format::Scientific}});
+    gi::Table table("Hemicube resolution against row sums (1 in a closed room), receivers smaller than a cell, and "
+                    "reciprocity; closed Cornell box, " + std::to_string(shapes.size()) + " elements",
+                    {{"resolution"}, {"cells"}, {"matrix ms", 0}, {"buried"}, {"max |1 - sum|", 1, gi::Format::Scientific},
+                     {"dF sum before scaling", 6}, {"sub-cell receivers"}, {"in rows"}, {"got nothing"},
+                     {"reciprocity", 2, gi::Format::Scientific}});
     std::vector<int> resolutions;
     for (int r : {10, 20, 50, 100, 200, 400})
       if (r <= max_resolution) resolutions.push_back(r);
     gi::Progress progress("hemicubes", static_cast<long long>(resolutions.size()));
     for (int r : resolutions) {
       const gi::Timer timer;
-      const gi::FormFactorMatrix F = gi::form_factor_matrix_hemicube(shapes, r, common.threads);
+      gi::HemicubeMatrixStats stats;
+      const gi::FormFactorMatrix F = gi::form_factor_matrix_hemicube(shapes, r, lesson.threads(), &stats);
       const double ms = timer.milliseconds();
       progress.advance();
       // Floor elements whose centre lies under a block see only the block's inside
@@ -168,21 +169,22 @@ int main(int argc, char** argv) {
       for (double s : gi::row_sums(F))
         if (s > 0.5) sums.push_back(s);
       double deviation = 0;
-      for (double s : sums) deviation += std::abs(1 - s) / sums.size();
-      table.add_row({r, 3 * r * r, ms, static_cast<long long>(F.n - sums.size()),
-                     *std::min_element(sums.begin(), sums.end()), *std::max_element(sums.begin(), sums.end()),
-                     deviation, total_reciprocity_error(F, areas)});
-      if (r == resolution) matrix_picture(F, out);
+      for (double s : sums) deviation = std::max(deviation, std::abs(1 - s));
+      table.add_row({r, 3 * r * r, ms, static_cast<long long>(F.n - sums.size()), std::max(deviation, 1e-17),
+                     gi::hemicube_weights(r).unnormalised_sum, stats.sub_cell_receivers,
+                     stats.rows_with_sub_cell_receivers, stats.sub_cell_missed, total_reciprocity_error(F, areas)});
+      if (r == resolution) matrix_picture(F, r, lesson);
     }
     progress.finish();
-    table.print();
-    table.write_csv(out + "/resolution.csv");
+    // The picture's resolution is not one of the table's: its matrix is made for the picture alone.
+    if (std::find(resolutions.begin(), resolutions.end(), resolution) == resolutions.end())
+      matrix_picture(gi::form_factor_matrix_hemicube(shapes, resolution, lesson.threads()), resolution, lesson);
+    lesson.table(table, "resolution");
 
     // 3. The speed figure: one row against a finely meshed box, one thread, and the
     // ray-cast rows that reach the same accuracy on the floor element of part 1.
     const gi::Mesh fine = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, speed_elements, 1), 1});
-    speed_table(fine, floor_element(fine), out);
-    std::cout << "\nimages: " << out << "/ (item_buffer.png, delta_form_factors.png, form_factor_matrix.png)\n";
-    return 0;
+    speed_table(fine, floor_element(fine), lesson);
+    lesson.say("\nimages: " + lesson.out().string() + "/ (item_buffer.png, delta_form_factors.png, form_factor_matrix.png)");
   });
 }

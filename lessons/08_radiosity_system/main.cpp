@@ -2,19 +2,19 @@
 // its direct solution, and the Neumann series B = E + RFE + (RF)^2 E + ... pictured
 // bounce by bounce, with the energy each bounce adds.
 #include <cmath>
+#include <filesystem>
+#include <stdexcept>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "gi/core/timer.hpp"
 #include "gi/image/diff.hpp"
-#include "gi/image/image_io.hpp"
 #include "gi/radiosity/display.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/radiosity/solvers.hpp"
 #include "gi/radiosity/vertex_colours.hpp"
 #include "gi/report/lesson.hpp"
-#include "gi/report/options.hpp"
 #include "gi/report/table.hpp"
 
 namespace {
@@ -46,28 +46,32 @@ gi::Image matrix_picture(const gi::RadiositySystem& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gi::run_lesson("08_radiosity_system", [&] {
-    gi::CommonOptions common;
-    int elements = 400, resolution = 100, bounces = 4;
-    gi::DisplaySettings display;
-    display.width = 256;
-    display.height = 256;
-    double exposure = 1.5;
-    gi::Options options("08_radiosity_system", "The radiosity system (I - RF) B = E of a small Cornell box: the "
-                                               "matrix, its direct solution, and the Neumann series bounce by bounce.");
-    gi::add_common_options(options, common, "08_radiosity_system");
-    options.add("--width", display.width, "image width in pixels", 16, 4096)
-        .add("--height", display.height, "image height in pixels", 16, 4096)
-        .add("--elements", elements, "about how many elements to mesh the Cornell box into", 20, 3000)
-        .add("--resolution", resolution, "hemicube resolution of the form factors (even)", 10, 1000)
-        .add("--bounces", bounces, "terms of the Neumann series to picture", 1, 20)
-        .add("--exposure", exposure, "multiplies the radiance before display", 0.01, 100.0);
-    if (!options.parse(argc, argv)) return 0;
-    if (resolution % 2) throw gi::OptionError("the hemicube resolution must be even");
-    display.threads = common.threads;
-    display.seed = common.seed;
+  gi::Lesson lesson("08_radiosity_system", "The radiosity system (I - RF) B = E of a small Cornell box: the "
+                                           "matrix, its direct solution, and the Neumann series bounce by bounce.");
+  int elements = 400, resolution = 100, bounces = 4;
+  gi::DisplaySettings display;
+  display.width = 256;
+  display.height = 256;
+  double exposure = 1.5;
+  lesson.add_image_size(display.width, display.height);
+  lesson.options()
+      .add("--elements", elements, "about how many elements to mesh the Cornell box into", 20, 3000)
+      .add("--resolution", resolution, "hemicube resolution of the form factors", 10, 1000, gi::even)
+      .add("--bounces", bounces, "terms of the Neumann series to picture", 1, 20)
+      .add("--exposure", exposure, "multiplies the radiance before display", 0.01, 100.0);
+  // The strip of pictures (emission, direct, the bounces, the solution) is one image.
+  lesson.add_check([&] {
+    const int pictures = bounces + 3;
+    if (pictures * (display.width + 4) - 4 > gi::max_image_side)
+      throw gi::OptionError("--width " + std::to_string(display.width) + " makes the strip of " +
+                            std::to_string(pictures) + " pictures wider than " + std::to_string(gi::max_image_side) +
+                            " pixels; use at most --width " + std::to_string((gi::max_image_side + 4) / pictures - 4) +
+                            " with --bounces " + std::to_string(bounces));
+  });
+  return lesson.run(argc, argv, [&] {
+    display.threads = lesson.threads();
+    display.seed = lesson.seed();
     display.white = 1 / exposure;  // anti-aliased edges on the light (display.hpp)
-    const std::string& out = common.out;
 
     const gi::RadiosityScene scene = gi::cornell_box();
     const gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, elements, 1), 1});
@@ -75,21 +79,25 @@ int main(int argc, char** argv) {
     gi::FormFactorSettings hemicube;
     hemicube.hemicube_resolution = resolution;
     const gi::Timer ff_timer;
-    const gi::RadiositySystem system = gi::make_system(mesh, gi::form_factor_matrix(receivers, hemicube, common.threads));
+    const gi::RadiositySystem system = gi::make_system(mesh, gi::form_factor_matrix(receivers, hemicube, lesson.threads()));
     const double ff_ms = ff_timer.milliseconds();
     const gi::Timer direct_timer;
     const gi::SolverResult direct = gi::solve_direct(system);
     const double direct_ms = direct_timer.milliseconds();
-    gi::write_png(matrix_picture(system), out + "/matrix_K.png");
-    std::cout << "Cornell box, " << system.size() << " elements: form factors (hemicube " << resolution << ") "
-              << gi::format_number(ff_ms, 0, gi::Format::Fixed) << " ms; K = I - RF solved by Gaussian elimination in "
-              << gi::format_number(direct_ms, 0, gi::Format::Fixed) << " ms (3 channels, O(n^3))\n\n";
+    if (direct.status != gi::SolveStatus::Converged)
+      throw std::runtime_error("the direct solution failed: " + gi::stop_reason(direct, "step"));
+    lesson.diagram(matrix_picture(system), "matrix_K", "log10 |K_ij| of K = I - RF (green channel), the diagonal's 1 in red");
+    lesson.say("Cornell box, " + std::to_string(system.size()) + " elements: form factors (hemicube " +
+               std::to_string(resolution) + ") " + gi::format_number(ff_ms, 0, gi::Format::Fixed) +
+               " ms; K = I - RF solved by Gaussian elimination in " + gi::format_number(direct_ms, 0, gi::Format::Fixed) +
+               " ms (3 channels, O(n^3))\n");
 
     // The Neumann series, term by term, and the picture after each.
     gi::Table table("Neumann series B = E + RFE + (RF)^2 E + ...: power per term (mean of R, G, B)",
                     {{"term"}, {"light"}, {"power", 4, gi::Format::Scientific}, {"share of B %", 2},
                      {"still missing %", 2}});
     const double total = mean(gi::power(system.area, direct.B));
+    const gi::View view{scene.camera, display.width, display.height, gi::describe_pixel_samples(display)};
     std::vector<gi::Color> term = system.emission, partial(system.size(), gi::Color(0.0));
     std::vector<gi::Image> strip;
     for (int k = 0; k <= bounces + 1; ++k) {
@@ -97,22 +105,27 @@ int main(int argc, char** argv) {
       const std::string label = k == 0 ? "emission" : k == 1 ? "direct light" : std::to_string(k - 1) + " bounce" + (k > 2 ? "s" : "");
       const double p = mean(gi::power(system.area, term));
       table.add_row({k, label, p, 100 * p / total, 100 * (1 - mean(gi::power(system.area, partial)) / total)});
-      strip.push_back(gi::render_radiosity(receivers, mesh, partial, scene.camera, display));
-      gi::write_png(strip.back(), out + "/neumann_" + std::to_string(k) + ".png", exposure);
+      const gi::RadiosityPicture picture = gi::render_radiosity_picture(receivers, mesh, partial, scene.camera, display);
+      strip.push_back(picture.shown);
+      lesson.picture(picture.radiance, "neumann_" + std::to_string(k), "the Neumann series up to " + label, view,
+                     exposure, &picture.shown);
       term = bounce(system, term);
     }
-    strip.push_back(gi::render_radiosity(receivers, mesh, direct.B, scene.camera, display));
-    gi::write_png(strip.back(), out + "/solution.png", exposure);
-    gi::write_png(gi::side_by_side(strip), out + "/neumann_series.png", exposure);
-    table.print();
-    table.write_csv(out + "/neumann.csv");
+    const gi::RadiosityPicture solution = gi::render_radiosity_picture(receivers, mesh, direct.B, scene.camera, display);
+    strip.push_back(solution.shown);
+    lesson.picture(solution.radiance, "solution", "the direct solution, smooth shading", view, exposure, &solution.shown);
+    lesson.diagram(gi::side_by_side(strip), "neumann_series", "emission, direct light, the bounces and the solution",
+                   exposure);
+    lesson.table(table, "neumann");
 
     display.shading = gi::Shading::Flat;
-    gi::write_png(gi::render_radiosity(receivers, mesh, direct.B, scene.camera, display), out + "/solution_flat.png",
-                  exposure);
-    gi::write_ply(mesh, gi::vertex_radiosity(mesh, direct.B), exposure, out + "/cornell.ply");
-    std::cout << "\nimages: " << out << "/ (neumann_series.png: emission, direct, bounces..., solution; matrix_K.png; "
-              << "cornell.ply for MeshLab or Blender)\n";
-    return 0;
+    const gi::RadiosityPicture flat = gi::render_radiosity_picture(receivers, mesh, direct.B, scene.camera, display);
+    lesson.picture(flat.radiance, "solution_flat", "the direct solution, flat shading", view, exposure, &flat.shown);
+    lesson.file("cornell.ply", gi::OutputKind::Mesh, "the mesh with vertex colours sRGB(exposure B / pi)",
+                [&](const std::filesystem::path& file) {
+                  gi::write_ply(mesh, gi::vertex_radiosity(mesh, direct.B), exposure, file);
+                });
+    lesson.say("\nimages: " + lesson.out().string() + "/ (neumann_series.png: emission, direct, bounces..., " +
+               "solution; matrix_K.png; cornell.ply for MeshLab or Blender)");
   });
 }

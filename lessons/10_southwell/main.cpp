@@ -4,6 +4,7 @@
 // and by time.
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -13,7 +14,6 @@
 #include "gi/radiosity/solvers.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
-#include "gi/report/options.hpp"
 #include "gi/report/table.hpp"
 
 namespace {
@@ -30,27 +30,70 @@ gi::Series curve(const gi::SolverResult& r, double steps_per_sweep, bool against
   return s;
 }
 
+// A history cell: the error at `step`, or "-" if the solver stopped before it.
+gi::Cell error_at(const gi::SolverResult& r, int step) {
+  const gi::SolverStep* row = gi::find_step(r, step);
+  return row ? gi::Cell(row->error) : gi::Cell("-");
+}
+
+// 1. Southwell's residual and error, n/8 steps apart, then every n, for the steps
+// that ran.
+void southwell_table(const gi::SolverResult& southwell, int n, int sweeps, gi::Lesson& lesson) {
+  gi::Table table("Southwell: residual and error against the direct solution (n/8 steps apart, then n)",
+                  {{"step"}, {"sweeps of work", 3}, {"||r||_2", 2, gi::Format::Scientific},
+                   {"max |r_i|", 2, gi::Format::Scientific}, {"unshot energy", 2, gi::Format::Scientific},
+                   {"error", 2, gi::Format::Scientific}});
+  std::vector<int> shown;
+  for (int k = 1; k < 8; ++k) shown.push_back(k * n / 8);
+  for (int k = 1; k <= sweeps; ++k) shown.push_back(k * n);
+  for (int step : shown)
+    if (const gi::SolverStep* s = gi::find_step(southwell, step))
+      table.add_row({s->step, double(s->step) / n, s->residual_2, s->residual_inf, s->unshot, s->error});
+  lesson.table(table, "southwell");
+  lesson.say("Southwell: " + gi::stop_reason(southwell, "step"));
+}
+
+// 2. Equal work: k sweeps of Gauss-Seidel against k n Southwell steps.
+void equal_work(const gi::SolverResult& jacobi, const gi::SolverResult& gauss_seidel,
+                const gi::SolverResult& southwell, int n, int sweeps, gi::Lesson& lesson) {
+  gi::Table work("Error after equal work, and the cost of one unit of it",
+                 {{"sweeps"}, {"Jacobi", 2, gi::Format::Scientific}, {"Gauss-Seidel", 2, gi::Format::Scientific},
+                  {"Southwell", 2, gi::Format::Scientific}});
+  for (int k = 1; k <= sweeps; k *= 2)
+    work.add_row({k, error_at(jacobi, k), error_at(gauss_seidel, k), error_at(southwell, k * n)});
+  std::cout << '\n';
+  lesson.table(work, "equal_work");
+  lesson.say("Jacobi: " + gi::stop_reason(jacobi, "sweep") + "; Gauss-Seidel: " +
+             gi::stop_reason(gauss_seidel, "sweep"));
+  const double step_us = 1e6 * southwell.history.back().seconds / southwell.history.back().step;
+  const double sweep_us = 1e6 * gauss_seidel.history.back().seconds / gauss_seidel.history.back().step;
+  // A step reads column i of F, n numbers a row apart: strided, cache-unfriendly
+  // reads, which is why a step costs more than 1/n of a sweep.
+  lesson.say("\none Southwell step: " + gi::format_number(step_us, 2, gi::Format::Fixed) +
+             " us (O(n)); one Gauss-Seidel sweep: " + gi::format_number(sweep_us, 1, gi::Format::Fixed) +
+             " us (O(n^2)); ratio " + gi::format_number(sweep_us / step_us, 0, gi::Format::Fixed) + " for n = " +
+             std::to_string(n));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gi::run_lesson("10_southwell", [&] {
-    gi::CommonOptions common;
-    int elements = 500, sweeps = 12, resolution = 100;
-    gi::Options options("10_southwell", "Southwell iteration on the Cornell box: residual per step, the cost of a "
-                                        "step, and error against work and time beside Jacobi and Gauss-Seidel.");
-    gi::add_common_options(options, common, "10_southwell");
-    options.add("--elements", elements, "about how many elements to mesh the Cornell box into", 20, 3000)
-        .add("--sweeps", sweeps, "work budget, in sweeps (n Southwell steps each)", 1, 200)
-        .add("--resolution", resolution, "hemicube resolution of the form factors (even)", 10, 1000);
-    if (!options.parse(argc, argv)) return 0;
-    if (resolution % 2) throw gi::OptionError("the hemicube resolution must be even");
-    const std::string& out = common.out;
-
+  gi::Lesson lesson("10_southwell", "Southwell iteration on the Cornell box: residual per step, the cost of a "
+                                    "step, and error against work and time beside Jacobi and Gauss-Seidel.",
+                    {.seed = false});
+  int elements = 500, sweeps = 12, resolution = 100;
+  lesson.options()
+      .add("--elements", elements, "about how many elements to mesh the Cornell box into", 20, 3000)
+      .add("--sweeps", sweeps, "work budget, in sweeps (n Southwell steps each)", 1, 200)
+      .add("--resolution", resolution, "hemicube resolution of the form factors", 10, 1000, gi::even);
+  return lesson.run(argc, argv, [&] {
     const gi::RadiosityScene scene = gi::cornell_box();
     const gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, elements, 1), 1});
     const gi::RadiositySystem system =
-        gi::make_system(mesh, gi::form_factor_matrix_hemicube(gi::element_shapes(mesh), resolution, common.threads));
+        gi::make_system(mesh, gi::form_factor_matrix_hemicube(gi::element_shapes(mesh), resolution, lesson.threads()));
     const gi::SolverResult direct = gi::solve_direct(system);
+    if (direct.status != gi::SolveStatus::Converged)
+      throw std::runtime_error("the direct solution failed: " + gi::stop_reason(direct, "step"));
     const int n = system.size();
 
     gi::SolverOptions settings;
@@ -62,51 +105,20 @@ int main(int argc, char** argv) {
     const gi::SolverResult jacobi = gi::solve_jacobi(system, settings);
     const gi::SolverResult gauss_seidel = gi::solve_gauss_seidel(system, settings);
 
-    std::cout << "Cornell box, " << n << " elements (hemicube " << resolution << " form factors)\n\n";
-    gi::Table table("Southwell: residual and error against the direct solution (n/8 steps apart, then n)",
-                    {{"step"}, {"sweeps of work", 3}, {"||r||_2", 2, gi::Format::Scientific},
-                     {"max |r_i|", 2, gi::Format::Scientific}, {"unshot energy", 2, gi::Format::Scientific},
-                     {"error", 2, gi::Format::Scientific}});
-    std::vector<int> shown;
-    for (int k = 1; k < 8; ++k) shown.push_back(k * n / 8);
-    for (int k = 1; k <= sweeps; ++k) shown.push_back(k * n);
-    for (int step : shown) {
-      const gi::SolverStep& s = southwell.history[step - 1];
-      table.add_row({s.step, double(s.step) / n, s.residual_2, s.residual_inf, s.unshot, s.error});
-    }
-    table.print();
-    table.write_csv(out + "/southwell.csv");
+    lesson.say("Cornell box, " + std::to_string(n) + " elements (hemicube " + std::to_string(resolution) +
+               " form factors)\n");
+    southwell_table(southwell, n, sweeps, lesson);
+    equal_work(jacobi, gauss_seidel, southwell, n, sweeps, lesson);
 
-    // Equal work: k sweeps of Gauss-Seidel against k n Southwell steps.
-    gi::Table work("Error after equal work, and the cost of one unit of it",
-                   {{"sweeps"}, {"Jacobi", 2, gi::Format::Scientific}, {"Gauss-Seidel", 2, gi::Format::Scientific},
-                    {"Southwell", 2, gi::Format::Scientific}});
-    for (int k = 1; k <= sweeps; k *= 2) {
-      work.add_row({k, jacobi.history[k - 1].error, gauss_seidel.history[k - 1].error,
-                    southwell.history[k * n - 1].error});
-    }
-    std::cout << '\n';
-    work.print();
-    work.write_csv(out + "/equal_work.csv");
-    const double step_us = 1e6 * southwell.history.back().seconds / southwell.history.back().step;
-    const double sweep_us = 1e6 * gauss_seidel.history.back().seconds / gauss_seidel.history.back().step;
-    // A step reads column i of F, n numbers a row apart: strided, cache-unfriendly
-    // reads, which is why a step costs more than 1/n of a sweep.
-    std::cout << "\none Southwell step: " << gi::format_number(step_us, 2, gi::Format::Fixed)
-              << " us (O(n)); one Gauss-Seidel sweep: " << gi::format_number(sweep_us, 1, gi::Format::Fixed)
-              << " us (O(n^2)); ratio " << gi::format_number(sweep_us / step_us, 0, gi::Format::Fixed) << " for n = "
-              << n << '\n';
-
-    gi::write_svg({"Error against work (1 sweep = n^2 multiply-adds = n Southwell steps)", "sweeps of work",
-                   "RMS error / RMS B", false, true,
-                   {curve(jacobi, 1, false, 1), curve(gauss_seidel, 1, false, 1),
-                    curve(southwell, n, false, std::max(1, n / 16))}},
-                  out + "/error_vs_work.svg");
-    gi::write_svg({"Error against time", "solver time (ms)", "RMS error / RMS B", false, true,
-                   {curve(jacobi, 1, true, 1), curve(gauss_seidel, 1, true, 1),
-                    curve(southwell, n, true, std::max(1, n / 16))}},
-                  out + "/error_vs_time.svg");
-    std::cout << "\ntables and charts: " << out << "/\n";
-    return 0;
+    lesson.chart({"Error against work (1 sweep = n^2 multiply-adds = n Southwell steps)", "sweeps of work",
+                  "RMS error / RMS B", false, true,
+                  {curve(jacobi, 1, false, 1), curve(gauss_seidel, 1, false, 1),
+                   curve(southwell, n, false, std::max(1, n / 16))}},
+                 "error_vs_work");
+    lesson.chart({"Error against time", "solver time (ms)", "RMS error / RMS B", false, true,
+                  {curve(jacobi, 1, true, 1), curve(gauss_seidel, 1, true, 1),
+                   curve(southwell, n, true, std::max(1, n / 16))}},
+                 "error_vs_time");
+    lesson.say("\ntables and charts: " + lesson.out().string() + "/");
   });
 }

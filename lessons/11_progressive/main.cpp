@@ -9,13 +9,11 @@
 
 #include "gi/core/timer.hpp"
 #include "gi/image/diff.hpp"
-#include "gi/image/image_io.hpp"
 #include "gi/radiosity/display.hpp"
 #include "gi/radiosity/progressive.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
-#include "gi/report/options.hpp"
 #include "gi/report/table.hpp"
 
 namespace {
@@ -32,102 +30,118 @@ double error(const std::vector<gi::Color>& B, const std::vector<gi::Color>& refe
   return std::sqrt(d2 / b2);
 }
 
+// The shots after which the table gets a row, and those that also get pictures
+// (the lecture's figure).
+const std::vector<int> table_shots = {1, 2, 4, 8, 16, 24, 50, 100, 200, 400, 800};
+const std::vector<int> picture_shots = {1, 2, 24, 100};
+
+bool contains(const std::vector<int>& list, int value) { return std::find(list.begin(), list.end(), value) != list.end(); }
+
+struct Box {
+  gi::RadiosityScene scene = gi::cornell_box();
+  gi::Mesh mesh;
+  gi::FormFactorScene receivers;
+  gi::RadiositySystem system;  // shooting needs no matrix: F stays empty
+  Box(double patch_size, int elements_per_side)
+      : mesh(gi::make_mesh(scene.surfaces, {patch_size, elements_per_side})),
+        receivers(gi::element_shapes(mesh)),
+        system(gi::make_system(mesh, {})) {}
+};
+
+// 1. The shots, watched: a table row at each of table_shots, pictures with and
+// without the ambient term at each of picture_shots, error against the converged answer.
+void watch_the_shots(const Box& box, const gi::ShooterRow& row, const gi::DisplaySettings& display, double exposure,
+                     gi::Lesson& lesson) {
+  gi::SolverOptions converge;
+  converge.tolerance = 1e-4;
+  converge.max_steps = 1'000'000;
+  const gi::SolverResult reference = gi::solve_progressive(box.system, box.mesh, row, converge);
+
+  gi::Table table("Progressive refinement, " + std::to_string(box.mesh.patches.size()) + " patches, " +
+                      std::to_string(box.mesh.elements.size()) + " elements (error against the converged answer)",
+                  {{"shots"}, {"unshot energy %", 3}, {"error", 2, gi::Format::Scientific},
+                   {"error with ambient", 2, gi::Format::Scientific}, {"ms", 0}});
+  std::vector<gi::Image> plain, ambient;
+  gi::Series unshot_curve{"unshot energy", {}, {}}, error_curve{"error", {}, {}}, ambient_curve{"error with ambient", {}, {}};
+  const gi::View view{box.scene.camera, display.width, display.height, gi::describe_pixel_samples(display)};
+  const auto draw = [&](const std::vector<gi::Color>& B, const std::string& stem, const std::string& caption) {
+    const gi::RadiosityPicture picture = gi::render_radiosity_picture(box.receivers, box.mesh, B, box.scene.camera, display);
+    lesson.picture(picture.radiance, stem, caption, view, exposure, &picture.shown);
+    return picture.shown;
+  };
+  gi::SolverOptions watched;
+  watched.tolerance = 0;
+  watched.max_steps = table_shots.back();
+  watched.observer = [&](const gi::SolverStep& step, const std::vector<gi::Color>& B, const std::vector<gi::Color>& unshot) {
+    if (!contains(table_shots, step.step)) return;
+    const gi::RadiositySystem& s = box.system;
+    const std::vector<gi::Color> shown = gi::with_ambient(s.area, s.rho, B, unshot);
+    const double e = error(B, reference.B, s.emission), e_ambient = error(shown, reference.B, s.emission);
+    table.add_row({step.step, 100 * step.unshot, e, e_ambient, 1e3 * step.seconds});
+    unshot_curve.x.push_back(step.step), unshot_curve.y.push_back(step.unshot);
+    error_curve.x.push_back(step.step), error_curve.y.push_back(e);
+    ambient_curve.x.push_back(step.step), ambient_curve.y.push_back(e_ambient);
+    if (!contains(picture_shots, step.step)) return;
+    const std::string shots = std::to_string(step.step);
+    plain.push_back(draw(B, "shots_" + shots, "after " + shots + " shots"));
+    ambient.push_back(draw(shown, "shots_" + shots + "_ambient", "after " + shots + " shots, with the ambient term"));
+  };
+  const gi::SolverResult run = gi::solve_progressive(box.system, box.mesh, row, watched);
+  lesson.table(table, "progressive");
+  if (run.status != gi::SolveStatus::StoppedAtLimit) lesson.say("shooting " + gi::stop_reason(run, "shot"));
+  lesson.diagram(gi::side_by_side(plain), "snapshots", "after 1, 2, 24 and 100 shots", exposure);
+  lesson.diagram(gi::side_by_side(ambient), "snapshots_ambient", "after 1, 2, 24 and 100 shots, with the ambient term",
+                 exposure);
+  lesson.chart({"Progressive refinement: unshot energy and error against shots", "shots", "fraction", true, true,
+                {unshot_curve, error_curve, ambient_curve}},
+               "progress");
+}
+
+// 2. Speed: shots until 1% of the emitted energy is left unshot, on a fine mesh,
+// shooting from patches of 4 x 4 elements (the lecture's two levels), one thread.
+void time_to_one_percent(int elements, const gi::FormFactorSettings& hemicube, gi::Lesson& lesson) {
+  const gi::RadiosityScene scene = gi::cornell_box();
+  const Box fine(gi::patch_size_for(scene.surfaces, elements, 4), 4);
+  gi::SolverOptions one_percent;
+  one_percent.tolerance = 0.01;
+  one_percent.max_steps = 1'000'000;
+  const gi::Timer timer;
+  const gi::SolverResult fast =
+      gi::solve_progressive(fine.system, fine.mesh, gi::patch_shooter(fine.receivers, fine.mesh, hemicube), one_percent);
+  lesson.say("\n" + std::to_string(fine.mesh.elements.size()) + " elements in " +
+             std::to_string(fine.mesh.patches.size()) + " patches: " + std::to_string(fast.history.size()) +
+             " shots to 1% unshot energy in " + gi::format_number(timer.seconds(), 2, gi::Format::Fixed) +
+             " s (hemicube " + std::to_string(hemicube.hemicube_resolution) + ", one thread)");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gi::run_lesson("11_progressive", [&] {
-    gi::CommonOptions common;
-    int patches = 400, elements_per_side = 2, resolution = 100, speed_elements = 10000;
-    gi::DisplaySettings display;
-    display.width = 200;
-    display.height = 200;
-    double exposure = 1.5;
-    gi::Options options("11_progressive", "Progressive refinement on the Cornell box: snapshots after 1, 2, 24 and 100 "
-                                          "shots with and without the ambient term; unshot energy and error per step.");
-    gi::add_common_options(options, common, "11_progressive");
-    options.add("--width", display.width, "image width in pixels", 16, 4096)
-        .add("--height", display.height, "image height in pixels", 16, 4096)
-        .add("--patches", patches, "about how many patches to cut the box into", 20, 5000)
-        .add("--elements-per-side", elements_per_side, "each patch is n x n elements", 1, 8)
-        .add("--resolution", resolution, "hemicube resolution (even)", 10, 1000)
-        .add("--speed-elements", speed_elements, "elements for the timing to 1% unshot energy", 100, 100000)
-        .add("--exposure", exposure, "multiplies the radiance before display", 0.01, 100.0);
-    if (!options.parse(argc, argv)) return 0;
-    if (resolution % 2) throw gi::OptionError("the hemicube resolution must be even");
-    display.threads = common.threads;
-    display.seed = common.seed;
+  gi::Lesson lesson("11_progressive", "Progressive refinement on the Cornell box: snapshots after 1, 2, 24 and 100 "
+                                      "shots with and without the ambient term; unshot energy and error per step.");
+  int patches = 400, elements_per_side = 2, speed_elements = 10000;
+  gi::FormFactorSettings hemicube;
+  gi::DisplaySettings display;
+  display.width = 200;
+  display.height = 200;
+  double exposure = 1.5;
+  lesson.add_image_size(display.width, display.height);
+  lesson.options()
+      .add("--patches", patches, "about how many patches to cut the box into", 20, 5000)
+      .add("--elements-per-side", elements_per_side, "each patch is n x n elements", 1, 8)
+      .add("--resolution", hemicube.hemicube_resolution, "hemicube resolution", 10, 1000, gi::even)
+      .add("--speed-elements", speed_elements, "elements for the timing to 1% unshot energy", 100, 100000)
+      .add("--exposure", exposure, "multiplies the radiance before display", 0.01, 100.0);
+  return lesson.run(argc, argv, [&] {
+    display.threads = lesson.threads();
+    display.seed = lesson.seed();
     display.white = 1 / exposure;  // anti-aliased edges on the light (display.hpp)
-    const std::string& out = common.out;
-
     const gi::RadiosityScene scene = gi::cornell_box();
-    const double patch_size = gi::patch_size_for(scene.surfaces, patches * elements_per_side * elements_per_side,
-                                                 elements_per_side);
-    const gi::Mesh mesh = gi::make_mesh(scene.surfaces, {patch_size, elements_per_side});
-    const gi::FormFactorScene receivers(gi::element_shapes(mesh));
-    gi::FormFactorSettings hemicube;
-    hemicube.hemicube_resolution = resolution;
-    const gi::ShooterRow row = [&](int p) { return gi::form_factor_row(receivers, mesh.patches[p].shape, p, hemicube); };
-    const gi::RadiositySystem system = gi::make_system(mesh, {});  // shooting needs no matrix
-
-    // The converged answer, for the error column.
-    gi::SolverOptions converge;
-    converge.tolerance = 1e-4;
-    converge.max_steps = 1'000'000;
-    const gi::SolverResult reference = gi::solve_progressive(system, mesh, row, converge);
-
-    // The same shots again, watched: a table row, and at four steps pictures.
-    gi::Table table("Progressive refinement, " + std::to_string(mesh.patches.size()) + " patches, " +
-                        std::to_string(mesh.elements.size()) + " elements (error against the converged answer)",
-                    {{"shots"}, {"unshot energy %", 3}, {"error", 2, gi::Format::Scientific},
-                     {"error with ambient", 2, gi::Format::Scientific}, {"ms", 0}});
-    std::vector<gi::Image> plain, ambient;
-    gi::Series unshot_curve{"unshot energy", {}, {}}, error_curve{"error", {}, {}}, ambient_curve{"error with ambient", {}, {}};
-    const std::vector<int> rows = {1, 2, 4, 8, 16, 24, 50, 100, 200, 400, 800};
-    gi::SolverOptions watched;
-    watched.tolerance = 0;
-    watched.max_steps = rows.back();
-    watched.observer = [&](const gi::SolverStep& step, const std::vector<gi::Color>& B, const std::vector<gi::Color>& unshot) {
-      if (std::find(rows.begin(), rows.end(), step.step) == rows.end()) return;
-      const std::vector<gi::Color> shown = gi::with_ambient(system.area, system.rho, B, unshot);
-      const double e = error(B, reference.B, system.emission), e_ambient = error(shown, reference.B, system.emission);
-      table.add_row({step.step, 100 * step.unshot, e, e_ambient, 1e3 * step.seconds});
-      unshot_curve.x.push_back(step.step), unshot_curve.y.push_back(step.unshot);
-      error_curve.x.push_back(step.step), error_curve.y.push_back(e);
-      ambient_curve.x.push_back(step.step), ambient_curve.y.push_back(e_ambient);
-      if (step.step == 1 || step.step == 2 || step.step == 24 || step.step == 100) {
-        plain.push_back(gi::render_radiosity(receivers, mesh, B, scene.camera, display));
-        ambient.push_back(gi::render_radiosity(receivers, mesh, shown, scene.camera, display));
-        const std::string name = out + "/shots_" + std::to_string(step.step);
-        gi::write_png(plain.back(), name + ".png", exposure);
-        gi::write_png(ambient.back(), name + "_ambient.png", exposure);
-      }
-    };
-    gi::solve_progressive(system, mesh, row, watched);
-    table.print();
-    table.write_csv(out + "/progressive.csv");
-    gi::write_png(gi::side_by_side(plain), out + "/snapshots.png", exposure);
-    gi::write_png(gi::side_by_side(ambient), out + "/snapshots_ambient.png", exposure);
-    gi::write_svg({"Progressive refinement: unshot energy and error against shots", "shots", "fraction", true, true,
-                   {unshot_curve, error_curve, ambient_curve}},
-                  out + "/progress.svg");
-
-    // Speed: shots until 1% of the emitted energy is left unshot, on a fine mesh.
-    // Shooting from patches of 4 x 4 elements: the lecture's two levels.
-    const gi::Mesh fine = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, speed_elements, 4), 4});
-    const gi::FormFactorScene fine_receivers(gi::element_shapes(fine));
-    const gi::ShooterRow fine_row = [&](int p) {
-      return gi::form_factor_row(fine_receivers, fine.patches[p].shape, p, hemicube);
-    };
-    gi::SolverOptions one_percent;
-    one_percent.tolerance = 0.01;
-    one_percent.max_steps = 1'000'000;
-    const gi::Timer timer;
-    const gi::SolverResult fast = gi::solve_progressive(gi::make_system(fine, {}), fine, fine_row, one_percent);
-    std::cout << "\n" << fine.elements.size() << " elements in " << fine.patches.size() << " patches: "
-              << fast.history.size() << " shots to 1% unshot energy in "
-              << gi::format_number(timer.seconds(), 2, gi::Format::Fixed) << " s (hemicube " << resolution
-              << ", one thread)\n";
-    std::cout << "\nimages: " << out << "/ (snapshots.png and snapshots_ambient.png: after 1, 2, 24, 100 shots)\n";
-    return 0;
+    const Box box(gi::patch_size_for(scene.surfaces, patches * elements_per_side * elements_per_side, elements_per_side),
+                  elements_per_side);
+    watch_the_shots(box, gi::patch_shooter(box.receivers, box.mesh, hemicube), display, exposure, lesson);
+    time_to_one_percent(speed_elements, hemicube, lesson);
+    lesson.say("\nimages: " + lesson.out().string() + "/ (snapshots.png and snapshots_ambient.png: after 1, 2, 24, " +
+               "100 shots)");
   });
 }

@@ -3,6 +3,8 @@
 // needs; and how close a Gauss-Seidel sweep comes to the memory's speed.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -17,7 +19,6 @@
 #include "gi/radiosity/solvers.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
-#include "gi/report/options.hpp"
 #include "gi/report/table.hpp"
 
 namespace {
@@ -27,8 +28,8 @@ struct Box {
   gi::RadiositySystem system;
 };
 
-Box cornell(int elements, bool closed, int threads, double* ff_ms = nullptr) {
-  const gi::RadiosityScene scene = gi::cornell_box(closed);
+// A scene meshed into about `elements` elements, with its hemicube form factors.
+Box meshed(const gi::RadiosityScene& scene, int elements, int threads, double* ff_ms = nullptr) {
   gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, elements, 1), 1});
   const gi::Timer timer;
   gi::RadiositySystem system =
@@ -37,12 +38,18 @@ Box cornell(int elements, bool closed, int threads, double* ff_ms = nullptr) {
   return {std::move(mesh), std::move(system)};
 }
 
+Box cornell(int elements, bool closed, int threads, double* ff_ms = nullptr) {
+  return meshed(gi::cornell_box(closed), elements, threads, ff_ms);
+}
+
 // 1. Every solver, one table, one chart.
-void showdown(const Box& box, const std::string& out) {
+void showdown(const Box& box, gi::Lesson& lesson) {
   const gi::RadiositySystem& s = box.system;
   const gi::Timer direct_timer;
   const gi::SolverResult direct = gi::solve_direct(s);
   const double direct_ms = direct_timer.milliseconds();
+  if (direct.status != gi::SolveStatus::Converged)
+    throw std::runtime_error("the direct solution failed: " + gi::stop_reason(direct, "step"));
   gi::SolverOptions options;
   options.tolerance = 1e-6;
   options.max_steps = 400 * s.size();
@@ -80,26 +87,34 @@ void showdown(const Box& box, const std::string& out) {
       }
     by_time.push_back(t), by_work.push_back(w);
   }
-  table.print();
-  table.write_csv(out + "/showdown.csv");
-  gi::write_svg({"All solvers: error against time", "solver time (ms)", "RMS error / RMS B", true, true, by_time},
-                out + "/error_vs_time.svg");
-  gi::write_svg({"All solvers: error against work", "sweeps of work (n^2 multiply-adds)", "RMS error / RMS B", false,
-                 true, by_work},
-                out + "/error_vs_work.svg");
+  lesson.table(table, "showdown");
+  lesson.chart({"All solvers: error against time", "solver time (ms)", "RMS error / RMS B", true, true, by_time},
+               "error_vs_time");
+  lesson.chart({"All solvers: error against work", "sweeps of work (n^2 multiply-adds)", "RMS error / RMS B", false,
+                true, by_work},
+               "error_vs_work");
 }
 
-// 2. Where solvers crawl or fail.
-void stability(const Box& closed, const Box& open, const std::string& out) {
+// 2. Where solvers crawl or fail, and the spectral radius of RF that says how fast
+// they go: Jacobi's error shrinks by rho(RF) per iteration, so it needs about
+// ln(1e-6) / ln rho(RF) of them. rho(RF) is measured (power iteration, the largest over
+// the channels), not assumed: it equals the reflectance only in a room that is truly
+// closed, like the empty box; the Cornell box's "closed" front leaves floor elements
+// under the blocks that see nothing and absorb all they get.
+void stability(const Box& closed, const Box& open, const Box& empty, gi::Lesson& lesson) {
   gi::Table table("Stability: iterations to ||r|| < 1e-6 (at most 20 000), or the failure detected",
-                  {{"case"}, {"Jacobi"}, {"Jacobi steps"}, {"Gauss-Seidel"}, {"G-S steps"}});
+                  {{"case"}, {"rho(RF)", 4}, {"ln(1e-6)/ln rho", 0}, {"Jacobi"}, {"Jacobi steps"}, {"Gauss-Seidel"},
+                   {"G-S steps"}});
   const auto run = [&](const std::string& name, const gi::RadiositySystem& s) {
+    double radius = 0;
+    for (int channel = 0; channel < 3; ++channel) radius = std::max(radius, gi::spectral_radius(s, channel).value());
     gi::SolverOptions options;
     options.tolerance = 1e-6;
     options.max_steps = 20000;
     const gi::SolverResult j = gi::solve_jacobi(s, options), g = gi::solve_gauss_seidel(s, options);
-    table.add_row({name, gi::status_name(j.status), j.history.back().step, gi::status_name(g.status),
-                   g.history.back().step});
+    const gi::Cell predicted = radius < 1 ? gi::Cell(std::log(1e-6) / std::log(radius)) : gi::Cell("-");
+    table.add_row({name, radius, predicted, gi::status_name(j.status), j.history.back().step,
+                   gi::status_name(g.status), g.history.back().step});
   };
   const auto with_rho = [](gi::RadiositySystem s, double rho) {
     for (gi::Color& r : s.rho) r = gi::Color(rho);
@@ -107,18 +122,19 @@ void stability(const Box& closed, const Box& open, const std::string& out) {
   };
   run("Cornell reflectances, closed", closed.system);
   run("Cornell reflectances, open front", open.system);
-  for (double rho : {0.9, 0.99, 0.999}) run("all rho = " + gi::format_number(rho, 3, gi::Format::Fixed) + ", closed", with_rho(closed.system, rho));
-  run("all rho = 0.99, open front", with_rho(open.system, 0.99));
+  for (double rho : {0.9, 0.99, 0.999})
+    run("empty closed box, all rho = " + gi::format_number(rho, 3, gi::Format::Fixed), with_rho(empty.system, rho));
+  run("Cornell closed, all rho = 0.999", with_rho(closed.system, 0.999));
+  run("Cornell open front, all rho = 0.99", with_rho(open.system, 0.99));
   run("all rho = 1.05 (unphysical)", with_rho(closed.system, 1.05));
   gi::RadiositySystem rows = with_rho(closed.system, 0.95);
   for (double& f : rows.F.values) f *= 1.1;  // rows summing to 1.1: energy from nowhere
   run("rho = 0.95, F rows sum to 1.1", rows);
-  table.print();
-  table.write_csv(out + "/stability.csv");
+  lesson.table(table, "stability");
 }
 
 // 3. Float against double: where each one's residual stops falling.
-void precision(const Box& box, const std::string& out) {
+void precision(const Box& box, gi::Lesson& lesson) {
   const gi::RadiositySystem& s = box.system;
   gi::FloatSystem f{s.size(), std::vector<float>(s.F.values.begin(), s.F.values.end()), {}, {}};
   for (int i = 0; i < s.size(); ++i)
@@ -137,16 +153,16 @@ void precision(const Box& box, const std::string& out) {
       table.add_row({sweep, gi::relative_residual(f, Bf), std::sqrt(r2 / e2)});
     }
   }
-  table.print();
-  table.write_csv(out + "/precision.csv");
+  lesson.table(table, "precision");
 }
 
 // 4. How fine a mesh does the box need? Pictures against the finest mesh's.
-void mesh_resolution(int threads, const std::string& out) {
+void mesh_resolution(int threads, std::uint64_t seed, gi::Lesson& lesson) {
   const gi::RadiosityScene scene = gi::cornell_box();
   gi::DisplaySettings display;
   display.width = display.height = 96;
   display.threads = threads;
+  display.seed = seed;
   const auto picture = [&](const Box& box, const gi::SolverResult& r) {
     return gi::render_radiosity(gi::FormFactorScene(gi::element_shapes(box.mesh)), box.mesh, r.B, scene.camera, display);
   };
@@ -168,15 +184,14 @@ void mesh_resolution(int threads, const std::string& out) {
     table.add_row({box.system.size(), ff_ms, 1e3 * r.history.back().seconds, error});
     curve.x.push_back(ff_ms + 1e3 * r.history.back().seconds), curve.y.push_back(error);
   }
-  table.print();
-  table.write_csv(out + "/mesh_resolution.csv");
-  gi::write_svg({"Mesh resolution: picture error against time", "form factors + solve (ms)", "RMSE of the picture",
-                 true, true, {curve}},
-                out + "/mesh_error_vs_time.svg");
+  lesson.table(table, "mesh_resolution");
+  lesson.chart({"Mesh resolution: picture error against time", "form factors + solve (ms)", "RMSE of the picture",
+                true, true, {curve}},
+               "mesh_error_vs_time");
 }
 
 // 5. One Gauss-Seidel sweep over an n x n float matrix against the memory's speed.
-void bandwidth(int n, const std::string& out) {
+void bandwidth(int n, gi::Lesson& lesson) {
   gi::FloatSystem s{n, std::vector<float>(static_cast<std::size_t>(n) * n), std::vector<float>(3 * n, 0.5f),
                     std::vector<float>(3 * n)};
   gi::Rng rng(12);
@@ -200,39 +215,34 @@ void bandwidth(int n, const std::string& out) {
                   {{"pass"}, {"ms", 1}, {"GB/s", 2}, {"x the bound", 2}});
   table.add_row({"read every F_ij (the memory-bandwidth bound)", 1e3 * gi::median(read), bound, 1.0});
   table.add_row({"Gauss-Seidel sweep, 3 channels", 1e3 * gi::median(sweep), achieved, gi::median(sweep) / gi::median(read)});
-  table.print();
-  table.write_csv(out + "/bandwidth.csv");
+  lesson.table(table, "bandwidth");
   if (!std::isfinite(sink)) std::cout << "(checksum " << sink << ")\n";  // keeps the read from being optimised away
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  return gi::run_lesson("12_solver_showdown", [&] {
-    gi::CommonOptions common;
-    int elements = 400, bandwidth_n = 10000;
-    bool skip_mesh = false;
-    gi::Options options("12_solver_showdown", "All radiosity solvers on one Cornell box; where they crawl or fail; "
-                                              "float against double; mesh resolution; a sweep against memory speed.");
-    gi::add_common_options(options, common, "12_solver_showdown");
-    options.add("--elements", elements, "about how many elements for the showdown and stability tables", 20, 3000)
-        .add("--bandwidth-n", bandwidth_n, "size n of the n x n float matrix of the sweep benchmark", 100, 20000)
-        .add_flag("--skip-mesh-study", skip_mesh, "leave out the mesh-resolution table (the slowest part)");
-    if (!options.parse(argc, argv)) return 0;
-    const std::string& out = common.out;
-    const Box open = cornell(elements, false, common.threads), closed = cornell(elements, true, common.threads);
-    showdown(open, out);
+  gi::Lesson lesson("12_solver_showdown", "All radiosity solvers on one Cornell box; where they crawl or fail; "
+                                          "float against double; mesh resolution; a sweep against memory speed.");
+  int elements = 400, bandwidth_n = 10000;
+  bool skip_mesh = false;
+  lesson.options()
+      .add("--elements", elements, "about how many elements for the showdown and stability tables", 20, 3000)
+      .add("--bandwidth-n", bandwidth_n, "size n of the n x n float matrix of the sweep benchmark", 100, 20000)
+      .add_flag("--skip-mesh-study", skip_mesh, "leave out the mesh-resolution table (the slowest part)");
+  return lesson.run(argc, argv, [&] {
+    const Box open = cornell(elements, false, lesson.threads()), closed = cornell(elements, true, lesson.threads());
+    showdown(open, lesson);
     std::cout << '\n';
-    stability(closed, open, out);
+    stability(closed, open, meshed(gi::closed_box(1.0), 150, lesson.threads()), lesson);
     std::cout << '\n';
-    precision(closed, out);
+    precision(closed, lesson);
     if (!skip_mesh) {
       std::cout << '\n';
-      mesh_resolution(common.threads, out);
+      mesh_resolution(lesson.threads(), lesson.seed(), lesson);
     }
     std::cout << '\n';
-    bandwidth(bandwidth_n, out);
-    std::cout << "\ntables and charts: " << out << "/\n";
-    return 0;
+    bandwidth(bandwidth_n, lesson);
+    lesson.say("\ntables and charts: " + lesson.out().string() + "/");
   });
 }

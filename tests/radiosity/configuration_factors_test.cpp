@@ -2,16 +2,23 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <numbers>
 #include <stdexcept>
 
 #include "gi/core/math.hpp"
+#include "gi/radiosity/form_factor_adaptive.hpp"
+#include "gi/radiosity/form_factor_formulas.hpp"
+#include "gi/radiosity/quadrature.hpp"
 
 using gi::vec3;
+using ld = long double;
 
 namespace {
+
+const ld pi_ld = std::numbers::pi_v<ld>;
 
 // The double area integral F_12 = 1/A_1 ∫∫ cos θ1 cos θ2 / (π r²) dA_2 dA_1 by the
 // midpoint rule on n x n cells per rectangle: an independent check of the closed forms
@@ -32,12 +39,58 @@ double integrate(vec3 o1, vec3 u1, vec3 v1, vec3 o2, vec3 u2, vec3 v2, int n) {
   return sum * da1 / (std::numbers::pi * gi::length(gi::cross(u1, v1)));
 }
 
+// The same integral, for rectangles far apart, by a Gauss-Legendre rule of order 12 in
+// each of the four coordinates, summed in long double: the kernel is smooth and
+// positive there, so nothing cancels and the rule is exact to round-off. `kernel`
+// takes a point of each rectangle in the rectangles' own coordinates.
+ld gauss_4d(const std::array<double, 8>& box, const std::function<ld(ld, ld, ld, ld)>& kernel) {
+  const gi::GaussRule& rule = gi::gauss_legendre(12);
+  const auto at = [&](int axis, int i) { return box[2 * axis] + rule.nodes[i] * ld(box[2 * axis + 1] - box[2 * axis]); };
+  ld sum = 0;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j)
+      for (int k = 0; k < 12; ++k)
+        for (int l = 0; l < 12; ++l)
+          sum += ld(rule.weights[i]) * rule.weights[j] * rule.weights[k] * rule.weights[l] *
+                 kernel(at(0, i), at(1, j), at(2, k), at(3, l));
+  return sum * (box[5] - box[4]) * (box[7] - box[6]);  // the mean over both, times A_2
+}
+
+// Directly opposed a x b rectangles c apart, by Gauss over both: F = 1/A_1 ∫∫ c² / (π r⁴).
+ld parallel_by_gauss(double a, double b, double c) {
+  return gauss_4d({0, a, 0, b, 0, a, 0, b}, [c](ld x, ld y, ld xi, ld eta) {
+    const ld r2 = (x - xi) * (x - xi) + (y - eta) * (y - eta) + ld(c) * c;
+    return ld(c) * c / (pi_ld * r2 * r2);
+  });
+}
+
+// The textbook forms, in long double (3 more digits than double for their cancellation).
+ld parallel_textbook(ld a, ld b, ld c) {
+  const ld x = a / c, y = b / c, x2 = 1 + x * x, y2 = 1 + y * y;
+  return 2 / (pi_ld * x * y) *
+         (0.5L * std::log(x2 * y2 / (x2 + y * y)) + x * std::sqrt(y2) * std::atan(x / std::sqrt(y2)) +
+          y * std::sqrt(x2) * std::atan(y / std::sqrt(x2)) - x * std::atan(x) - y * std::atan(y));
+}
+ld perpendicular_textbook(ld l, ld w, ld h) {
+  const ld W = w / l, H = h / l, w2 = W * W, h2 = H * H, s = w2 + h2;
+  const ld logs = std::log((1 + w2) * (1 + h2) / (1 + s)) + w2 * std::log(w2 * (1 + s) / ((1 + w2) * s)) +
+                  h2 * std::log(h2 * (1 + s) / ((1 + h2) * s));
+  return (W * std::atan(1 / W) + H * std::atan(1 / H) - std::sqrt(s) * std::atan(1 / std::sqrt(s)) + logs / 4) /
+         (pi_ld * W);
+}
+
+void expect_relative(double value, ld reference, double tolerance, const std::string& what) {
+  EXPECT_LE(std::abs(static_cast<ld>(value) - reference) / reference, tolerance)
+      << what << ": " << value << " against " << static_cast<double>(reference);
+}
+
 }  // namespace
 
 TEST(ConfigurationFactors, KnownValues) {
   EXPECT_NEAR(gi::ff_parallel_rectangles(1, 1, 1), 0.19982, 1e-5);
   EXPECT_NEAR(gi::ff_perpendicular_rectangles(1, 1, 1), 0.20004, 1e-5);
   EXPECT_NEAR(gi::ff_point_to_parallel_rectangle_corner(1e6, 1e6, 1), 0.25, 1e-6);
+  EXPECT_NEAR(gi::ff_point_to_perpendicular_rectangle_corner(1e6, 1e6, 1e-6), 0.25, 1e-6);
 }
 
 TEST(ConfigurationFactors, ParallelRectanglesAgreeWithQuadrature) {
@@ -45,6 +98,24 @@ TEST(ConfigurationFactors, ParallelRectanglesAgreeWithQuadrature) {
     const double numeric = integrate({0, 0, 0}, {a, 0, 0}, {0, b, 0}, {0, 0, c}, {0, b, 0}, {a, 0, 0}, 24);
     EXPECT_NEAR(gi::ff_parallel_rectangles(a, b, c), numeric, 2e-3 * numeric) << a << " " << b << " " << c;
   }
+}
+
+TEST(ConfigurationFactors, ParallelRectanglesKeepTheirDigitsFromTouchingTo1e6Apart) {
+  // Near and middle: the textbook form in long double (its cancellation grows with
+  // c/a; still 1e-13 at c = 10 a). Far: Gauss over both rectangles in long double.
+  // The textbook form in double gives +9e-5 at c = 1000 a and exactly 0 at 10^6.
+  for (auto [a, b] : {std::array{1.0, 1.0}, std::array{2.0, 0.3}})
+    for (double c : {1e-4, 1e-2, 0.3, 1.0, 2.0, 3.0, 10.0}) {
+      expect_relative(gi::ff_parallel_rectangles(a, b, c * a), parallel_textbook(a, b, c * a), 1e-13,
+                      "textbook, c/a = " + std::to_string(c));
+    }
+  for (double c : {10.0, 30.0, 100.0, 1e3, 1e4, 1e6})
+    expect_relative(gi::ff_parallel_rectangles(1, 0.5, c), parallel_by_gauss(1, 0.5, c), 1e-13,
+                    "Gauss, c = " + std::to_string(c));
+  // The series takes over at c^2 = 4 (a^2 + b^2): both sides of the switch agree.
+  const double switch_c = 2 * std::sqrt(2.0), at_switch = gi::ff_parallel_rectangles(1, 1, switch_c);
+  EXPECT_NEAR(gi::ff_parallel_rectangles(1, 1, switch_c * (1 - 1e-15)), at_switch, 1e-14 * at_switch);
+  EXPECT_NEAR(gi::ff_parallel_rectangles(1, 1, switch_c * (1 + 1e-15)), at_switch, 1e-14 * at_switch);
 }
 
 TEST(ConfigurationFactors, PerpendicularRectanglesAgreeWithQuadratureAndReciprocity) {
@@ -60,6 +131,25 @@ TEST(ConfigurationFactors, PerpendicularRectanglesAgreeWithQuadratureAndReciproc
   EXPECT_NEAR(w * gi::ff_perpendicular_rectangles(l, w, h), h * gi::ff_perpendicular_rectangles(l, h, w), 1e-12);
 }
 
+TEST(ConfigurationFactors, PerpendicularRectanglesKeepTheirDigitsAtEveryRatio) {
+  // Against the textbook form in long double where its cancellation (about 1/W, and
+  // W^2 or H^2 in the logarithms of ratios near 1) leaves 1e-13; at the extremes,
+  // where it does not, against the double contour integral (a different formula, in
+  // long double) and reciprocity.
+  for (double W : {0.01, 0.1, 1.0, 10.0, 100.0})
+    for (double H : {0.01, 0.1, 1.0, 10.0, 100.0})
+      expect_relative(gi::ff_perpendicular_rectangles(1, W, H), perpendicular_textbook(1, W, H), 1e-13,
+                      "W = " + std::to_string(W) + ", H = " + std::to_string(H));
+  for (double W : {1e-6, 1e-3, 1e3, 1e6})
+    for (double H : {1e-6, 1e-3, 1e3, 1e6}) {
+      const gi::Polygon floor = gi::make_polygon({vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, W, 0), vec3(0, W, 0)});
+      const gi::Polygon wall = gi::make_polygon({vec3(0, 0, 0), vec3(0, 0, H), vec3(1, 0, H), vec3(1, 0, 0)});
+      const double f = gi::ff_perpendicular_rectangles(1, W, H);
+      EXPECT_NEAR(f, gi::form_factor_analytic_adaptive(floor, wall, 1e-12).value, 1e-10 * f) << W << " " << H;
+      EXPECT_NEAR(W * f, H * gi::ff_perpendicular_rectangles(1, H, W), 1e-14 * W * f) << W << " " << H;
+    }
+}
+
 TEST(ConfigurationFactors, PointToRectangleAgreesWithQuadrature) {
   // The point at the origin looking up +z; the rectangle [0, a] x [0, b] at height c.
   const double a = 1.3, b = 0.6, c = 0.9;
@@ -73,8 +163,79 @@ TEST(ConfigurationFactors, PointToRectangleAgreesWithQuadrature) {
   EXPECT_NEAR(gi::ff_point_to_parallel_rectangle_corner(a, b, c), sum / std::numbers::pi, 1e-6);
 }
 
+TEST(ConfigurationFactors, PointToPerpendicularRectangleAgreesWithTheContourIntegral) {
+  // The point at the origin looking up +z; the rectangle x in [0, a], z in [0, b] in the
+  // plane y = c, facing the point. Lambert's contour integral is exact from a point.
+  for (auto [a, b, c] : {std::array{1.3, 0.6, 0.9}, std::array{0.2, 3.0, 0.01}, std::array{5.0, 0.1, 40.0}}) {
+    const gi::Polygon rectangle = gi::make_polygon({vec3(0, c, 0), vec3(a, c, 0), vec3(a, c, b), vec3(0, c, b)});
+    const double contour = gi::form_factor_point_to_polygon({0, 0, 0}, {0, 0, 1}, rectangle);
+    EXPECT_NEAR(gi::ff_point_to_perpendicular_rectangle_corner(a, b, c), contour, 1e-14 + 1e-12 * contour);
+  }
+  // Far away F -> a b^2 / (2 pi c^3) (cos_1 = z / r, cos_2 = c / r, r ~ c): the textbook
+  // form's two arctangents cancel there, 1e-6 of each other at c = 1000.
+  for (double c : {1e3, 1e6}) {
+    const double leading = 1.0 * 0.5 * 0.5 / (2 * std::numbers::pi * c * c * c);
+    EXPECT_NEAR(gi::ff_point_to_perpendicular_rectangle_corner(1, 0.5, c), leading, 1e-5 * leading);
+  }
+}
+
+TEST(ConfigurationFactors, OffsetParallelRectanglesNearAndFar) {
+  // Aligned, they are the directly opposed case.
+  EXPECT_NEAR(gi::ff_parallel_rectangles_offset(0, 2, 0, 0.5, 0, 2, 0, 0.5, 0.7), gi::ff_parallel_rectangles(2, 0.5, 0.7),
+              1e-14);
+  // Unequal and offset: against Gauss over both at 1.5 sizes and beyond the switch to
+  // the far rule at 30 sizes, with the two rules' results continuous there.
+  for (double scale : {1.5, 10.0, 29.0, 31.0, 1e3, 1e6}) {
+    const double z = 0.7 * scale, s = 0.3 * scale, t = 1.1 * scale;
+    const ld exact = gauss_4d({0, 1, 0, 2, s, s + 0.5, t, t + 1.5}, [z](ld x, ld y, ld xi, ld eta) {
+      const ld r2 = (x - xi) * (x - xi) + (y - eta) * (y - eta) + ld(z) * z;
+      return ld(z) * z / (pi_ld * r2 * r2);
+    });
+    expect_relative(gi::ff_parallel_rectangles_offset(0, 1, 0, 2, s, s + 0.5, t, t + 1.5, z), exact,
+                    scale < 2 ? 1e-9 : 1e-12, "scale " + std::to_string(scale));
+  }
+  // Superposition: the receiver cut in two receives the same.
+  const double whole = gi::ff_parallel_rectangles_offset(0, 1, 0, 1, -0.3, 0.8, 0.2, 1.4, 0.4);
+  const double parts = gi::ff_parallel_rectangles_offset(0, 1, 0, 1, -0.3, 0.25, 0.2, 1.4, 0.4) +
+                       gi::ff_parallel_rectangles_offset(0, 1, 0, 1, 0.25, 0.8, 0.2, 1.4, 0.4);
+  EXPECT_NEAR(whole, parts, 1e-14);
+}
+
+TEST(ConfigurationFactors, OffsetPerpendicularRectanglesNearAndFar) {
+  // Sharing the whole edge, they are the perpendicular case.
+  EXPECT_NEAR(gi::ff_perpendicular_rectangles_offset(0, 0.8, 0, 1.5, 0, 1.5, 0, 1.2),
+              gi::ff_perpendicular_rectangles(1.5, 0.8, 1.2), 1e-14);
+  // Near: against the analytic method (the double contour integral, a different
+  // formula). Far: against Gauss over both rectangles, across the switch at 30 sizes.
+  for (double scale : {0.0, 0.5, 1.5}) {
+    const double x1 = 0.2 * scale, y1 = 0.1 * scale, e1 = 0.5 * scale, z1 = 0.3 * scale;
+    const gi::Polygon sender = gi::make_polygon({vec3(x1, y1, 0), vec3(x1 + 1, y1, 0), vec3(x1 + 1, y1 + 2, 0), vec3(x1, y1 + 2, 0)});
+    const gi::Polygon receiver = gi::make_polygon({vec3(0, e1, z1), vec3(0, e1 + 1.5, z1), vec3(0, e1 + 1.5, z1 + 0.5), vec3(0, e1, z1 + 0.5)});
+    const double f = gi::ff_perpendicular_rectangles_offset(x1, x1 + 1, y1, y1 + 2, e1, e1 + 1.5, z1, z1 + 0.5);
+    EXPECT_NEAR(f, gi::form_factor_analytic_adaptive(sender, receiver, 1e-12).value, 1e-11 * f) << scale;
+  }
+  for (double scale : {10.0, 29.0, 31.0, 1e3, 1e6}) {
+    const double x1 = 0.2 * scale, y1 = 0.1 * scale, e1 = 0.5 * scale, z1 = 0.3 * scale;
+    const ld exact = gauss_4d({x1, x1 + 1, y1, y1 + 2, e1, e1 + 1.5, z1, z1 + 0.5}, [](ld x, ld y, ld eta, ld z) {
+      const ld r2 = x * x + (y - eta) * (y - eta) + z * z;
+      return x * z / (pi_ld * r2 * r2);
+    });
+    expect_relative(gi::ff_perpendicular_rectangles_offset(x1, x1 + 1, y1, y1 + 2, e1, e1 + 1.5, z1, z1 + 0.5), exact,
+                    1e-12, "scale " + std::to_string(scale));
+  }
+  // Superposition along the common axis.
+  const double whole = gi::ff_perpendicular_rectangles_offset(0, 1, 0, 1, -0.5, 2, 0.1, 0.9);
+  const double parts = gi::ff_perpendicular_rectangles_offset(0, 1, 0, 1, -0.5, 0.4, 0.1, 0.9) +
+                       gi::ff_perpendicular_rectangles_offset(0, 1, 0, 1, 0.4, 2, 0.1, 0.9);
+  EXPECT_NEAR(whole, parts, 1e-14);
+}
+
 TEST(ConfigurationFactors, BadLengthsAreRejected) {
   EXPECT_THROW(gi::ff_parallel_rectangles(0, 1, 1), std::invalid_argument);
   EXPECT_THROW(gi::ff_perpendicular_rectangles(1, -1, 1), std::invalid_argument);
   EXPECT_THROW(gi::ff_point_to_parallel_rectangle_corner(1, 1, NAN), std::invalid_argument);
+  EXPECT_THROW(gi::ff_point_to_perpendicular_rectangle_corner(1, INFINITY, 1), std::invalid_argument);
+  EXPECT_THROW(gi::ff_parallel_rectangles_offset(1, 0, 0, 1, 0, 1, 0, 1, 1), std::invalid_argument);  // x2 < x1
+  EXPECT_THROW(gi::ff_parallel_rectangles_offset(0, 1, 0, 1, 0, 1, 0, 1, 0), std::invalid_argument);  // in one plane
+  EXPECT_THROW(gi::ff_perpendicular_rectangles_offset(-0.5, 1, 0, 1, 0, 1, 0, 1), std::invalid_argument);  // crosses
 }

@@ -2,7 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
 #include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/vertex_colours.hpp"
 
 TEST(Display, AUniformRoomShowsItsRadianceEverywhere) {
   // Inside a closed box whose every element has B = 2: every pixel is L = 2 / pi, flat
@@ -48,4 +54,49 @@ TEST(Display, SmoothShadingInterpolatesAcrossAnElement) {
   EXPECT_GT(smooth.at(21, 20).x, 0.2 / gi::pi);
   EXPECT_LT(smooth.at(21, 20).x, 0.8 / gi::pi);
   EXPECT_LT(smooth.at(5, 20).x, smooth.at(15, 20).x) << "a ramp, not tiles";
+}
+
+TEST(Display, TheLinearPictureIsNotClampedAndTheShownOneIs) {
+  // A uniform room at L = 2 / pi, shown with white = 0.25: the PNG's picture is 0.25
+  // everywhere, the radiance for the PFM stays 2 / pi, from the same eye rays.
+  const gi::RadiosityScene box = gi::closed_box(1.0);
+  const gi::Mesh mesh = gi::make_mesh(box.surfaces, {0.25, 2});
+  const gi::FormFactorScene scene(gi::element_shapes(mesh));
+  const std::vector<gi::Color> B(mesh.elements.size(), gi::Color(2.0));
+  const gi::Camera inside{{0.5, 0.5, 0.9}, {0.4, 0.3, 0.0}, {0, 1, 0}, 70};
+  gi::DisplaySettings settings;
+  settings.width = 20;
+  settings.height = 12;
+  settings.white = 0.25;
+  const gi::RadiosityPicture picture = gi::render_radiosity_picture(scene, mesh, B, inside, settings);
+  for (const gi::Pixel& p : picture.radiance.pixels) ASSERT_NEAR(p.y, 2.0 / gi::pi, 1e-5);
+  for (const gi::Pixel& p : picture.shown.pixels) ASSERT_NEAR(p.y, 0.25, 1e-6);
+  EXPECT_EQ(gi::render_radiosity(scene, mesh, B, inside, settings).pixels, picture.shown.pixels);
+  settings.white = 0;
+  const gi::RadiosityPicture plain = gi::render_radiosity_picture(scene, mesh, B, inside, settings);
+  EXPECT_EQ(plain.shown.pixels, plain.radiance.pixels);
+  EXPECT_EQ(gi::describe_pixel_samples(settings), "2 x 2 jittered eye rays, box filter");
+}
+
+TEST(Display, PlyHoldsEveryVertexAndFaceAndRefusesNan) {
+  const gi::RadiosityScene box = gi::closed_box(1.0);
+  const gi::Mesh mesh = gi::make_mesh(box.surfaces, {0.5, 1});
+  std::vector<gi::Color> vertex_B(mesh.vertices.size(), gi::Color(gi::pi));  // L = 1: white
+  const std::filesystem::path file = std::filesystem::path(testing::TempDir()) / "gi_display_test" / "box.ply";
+  gi::write_ply(mesh, vertex_B, 1.0, file);
+  std::ifstream in(file);
+  std::string line;
+  int lines = 0, white = 0, quads = 0;
+  while (std::getline(in, line)) {
+    ++lines;
+    white += line.size() > 12 && line.compare(line.size() - 12, 12, " 255 255 255") == 0;
+    quads += line.rfind("4 ", 0) == 0;
+  }
+  EXPECT_EQ(white, static_cast<int>(mesh.vertices.size()));
+  EXPECT_EQ(quads, static_cast<int>(mesh.elements.size()));
+  EXPECT_EQ(lines, 13 + white + quads) << "a header of 13 lines, then a line per vertex and per face";
+  const std::uintmax_t size = std::filesystem::file_size(file);
+  vertex_B[3].y = NAN;
+  EXPECT_THROW(gi::write_ply(mesh, vertex_B, 1.0, file), std::runtime_error);
+  EXPECT_EQ(std::filesystem::file_size(file), size) << "the earlier file is left whole";
 }

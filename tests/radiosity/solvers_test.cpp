@@ -191,3 +191,86 @@ TEST(Solvers, EnergyIsConservedInAClosedRoom) {
   }
   EXPECT_NEAR(absorbed, emitted, 2e-3 * emitted);
 }
+
+TEST(Solvers, ASingularSystemSaysSoWithOneHistoryRow) {
+  // Two elements that see only each other, rho = 1: K = [[1, -1], [-1, 1]] has no
+  // inverse (light would circle forever).
+  gi::RadiositySystem s = furnace(2, 1.0, 1.0);
+  gi::SolverOptions options;
+  const std::vector<Color> reference(2, Color(1.0));
+  options.reference = &reference;
+  const gi::SolverResult r = gi::solve_direct(s, options);
+  EXPECT_EQ(r.status, gi::SolveStatus::Singular);
+  EXPECT_EQ(gi::status_name(r.status), "singular");
+  ASSERT_EQ(r.history.size(), 1u);
+  EXPECT_EQ(r.history.back().step, 1);
+  EXPECT_TRUE(std::isnan(r.history.back().residual_2));
+  EXPECT_TRUE(std::isnan(r.history.back().error)) << "no solution, no error to report";
+  ASSERT_EQ(r.B.size(), 2u);
+  EXPECT_TRUE(std::isnan(r.B[0].x));
+  EXPECT_EQ(gi::stop_reason(r, "step"), "singular after 1 step");
+}
+
+TEST(Solvers, HistoriesEndWhereTheSolverStopped) {
+  // No interreflection (F = 0): one iteration reaches B = E exactly, residual 0, so a
+  // solver asked for 30 iterations with tolerance 0 stops after 1, converged.
+  gi::RadiositySystem s = furnace(3, 0.5, 1.0);
+  std::fill(s.F.values.begin(), s.F.values.end(), 0.0);
+  gi::SolverOptions options;
+  options.tolerance = 0;
+  options.max_steps = 30;
+  for (const gi::SolverResult& r : {gi::solve_jacobi(s, options), gi::solve_gauss_seidel(s, options)}) {
+    EXPECT_EQ(r.status, gi::SolveStatus::Converged) << r.method;
+    ASSERT_EQ(r.history.size(), 1u) << r.method;
+    ASSERT_NE(gi::find_step(r, 1), nullptr);
+    EXPECT_EQ(gi::find_step(r, 1)->residual_2, 0.0);
+    EXPECT_EQ(gi::find_step(r, 2), nullptr) << "step 2 never ran";
+    EXPECT_EQ(gi::find_step(r, 0), nullptr);
+    EXPECT_EQ(gi::stop_reason(r, "iteration"), "converged after 1 iteration");
+  }
+  // Recorded every 4th step: steps between are not found, the last one is.
+  s = furnace(4, 0.5, 1.0);
+  options.max_steps = 10;
+  options.record_every = 4;
+  const gi::SolverResult sparse = gi::solve_southwell(s, options);
+  EXPECT_NE(gi::find_step(sparse, 8), nullptr);
+  EXPECT_EQ(gi::find_step(sparse, 9), nullptr);
+  EXPECT_NE(gi::find_step(sparse, 10), nullptr);
+  EXPECT_EQ(gi::stop_reason(sparse, "step"), "stopped at the limit after 10 steps");
+}
+
+TEST(Solvers, ThePatchShooterIsThePatchsFormFactorRow) {
+  const gi::RadiosityScene scene = gi::cornell_box();
+  const gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, 120, 2), 2});
+  const gi::FormFactorScene receivers(gi::element_shapes(mesh));
+  gi::FormFactorSettings settings;
+  settings.hemicube_resolution = 20;
+  const gi::ShooterRow row = gi::patch_shooter(receivers, mesh, settings);
+  for (int p : {0, 7, static_cast<int>(mesh.patches.size()) - 1})
+    EXPECT_EQ(row(p), gi::form_factor_row(receivers, mesh.patches[p].shape, p, settings)) << p;
+  settings.hemicube_resolution = 21;
+  EXPECT_THROW(gi::patch_shooter(receivers, mesh, settings), std::invalid_argument);
+}
+
+TEST(SpectralRadius, IsTheReflectanceOfAFurnace) {
+  // Uniform rho and rows of F that sum to 1: R F = rho F, and a stochastic F has
+  // spectral radius 1.
+  const gi::RadiositySystem s = furnace(6, 0.6, 1.0);
+  const gi::SpectralRadius r = gi::spectral_radius(s, 1);
+  EXPECT_TRUE(r.converged);
+  EXPECT_NEAR(r.value(), 0.6, 1e-7);
+}
+
+TEST(SpectralRadius, TwoFacingPatchesAndARowOfZeros) {
+  // R F = [[0, 0.5], [0.8, 0]] has eigenvalues +-sqrt(0.4): the shift copes with the
+  // pair. A third element that gathers nothing (a row of zeros) changes nothing.
+  gi::RadiositySystem s;
+  s.area = {1, 1, 1};
+  s.rho = {Color(0.5), Color(0.8), Color(0.7)};
+  s.emission = {Color(1), Color(0), Color(0)};
+  s.F = {3, {0, 1, 0, 1, 0, 0, 0, 0, 0}};
+  const gi::SpectralRadius r = gi::spectral_radius(s, 0);
+  EXPECT_TRUE(r.converged);
+  EXPECT_NEAR(r.value(), std::sqrt(0.4), 1e-6);
+  EXPECT_LE(r.lower, std::sqrt(0.4) + 1e-12);
+}

@@ -60,6 +60,33 @@ TEST(Options, RangesAreInclusive) {
   EXPECT_TRUE(l.parse({"--width", "8192"}));
 }
 
+TEST(Options, SeedsTakeTheWholeUnsignedRange) {
+  Lesson l;
+  ASSERT_TRUE(l.parse({"--seed", "18446744073709551615"}));
+  EXPECT_EQ(l.common.seed, 18446744073709551615ull);
+  ASSERT_TRUE(l.parse({"--seed", "9223372036854775808"}));  // 2^63, once refused
+  EXPECT_EQ(l.common.seed, 9223372036854775808ull);
+  ASSERT_TRUE(l.parse({"--seed=0"}));
+  EXPECT_EQ(l.common.seed, 0u);
+}
+
+TEST(Options, ARuleBesidesTheRange) {
+  int resolution = 100;
+  gi::Options options("06_demo", "A demo.");
+  options.add("--resolution", resolution, "hemicube resolution", 2, 2000, gi::even);
+  const char* odd[] = {"06_demo", "--resolution", "33"};
+  try {
+    options.parse(3, odd);
+    FAIL() << "an odd resolution was accepted";
+  } catch (const gi::OptionError& e) {
+    EXPECT_STREQ(e.what(), "--resolution must be even, got 33");
+  }
+  const char* even[] = {"06_demo", "--resolution=34"};
+  EXPECT_TRUE(options.parse(2, even));
+  EXPECT_EQ(resolution, 34);
+  EXPECT_NE(options.help().find("range [2, 2000], even"), std::string::npos) << options.help();
+}
+
 TEST(Options, BadInputGivesOneClearLine) {
   EXPECT_EQ(error_of({"--width", "-5"}), "--width must be in [1, 8192], got -5");
   EXPECT_EQ(error_of({"--width", "12abc"}), "--width expects a whole number, got '12abc'");
@@ -67,7 +94,12 @@ TEST(Options, BadInputGivesOneClearLine) {
   EXPECT_EQ(error_of({"--width"}), "--width needs a value");
   EXPECT_EQ(error_of({"--widht", "3"}), "unknown option '--widht' (did you mean --width?)");
   EXPECT_EQ(error_of({"--scene", "cornell"}), "--scene must be one of: whitted, spheres; got 'cornell'");
-  EXPECT_EQ(error_of({"--seed", "-1"}), "--seed must not be negative, got -1");
+  EXPECT_EQ(error_of({"--seed", "-1"}), "--seed expects a whole number from 0 to 18446744073709551615, got '-1'");
+  EXPECT_EQ(error_of({"--seed", "18446744073709551616"}), "--seed must be at most 18446744073709551615, got 18446744073709551616");
+  EXPECT_EQ(error_of({"--seed", "+5"}), "--seed expects a whole number from 0 to 18446744073709551615, got '+5'");
+  EXPECT_EQ(error_of({"--out", "--threads", "2"}), "--out needs a value, got the option '--threads'");
+  EXPECT_EQ(error_of({"--out", ""}), "--out needs a value, got an empty one");
+  EXPECT_EQ(error_of({"--width", "--exposure"}), "--width needs a value, got the option '--exposure'");
   EXPECT_EQ(error_of({"--fast=1"}), "--fast takes no value");
   EXPECT_EQ(error_of({"--threads", "1000"}), "--threads must be in [0, 256], got 1000");
 }

@@ -9,6 +9,8 @@
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
 #define STBI_ONLY_HDR
+// The largest image (image.hpp); the readers check it, and the file size, first.
+#define STBI_MAX_DIMENSIONS (1 << 15)
 #include <stb_image.h>
 #include <stb_image_write.h>
 #pragma GCC diagnostic pop

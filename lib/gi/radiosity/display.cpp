@@ -30,18 +30,28 @@ vec2 unbilinear(const std::array<vec3, 4>& c, const vec3& n, const vec3& p) {
 
 Image render_radiosity(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
                        const Camera& camera, const DisplaySettings& settings) {
+  return render_radiosity_picture(scene, mesh, B, camera, settings).shown;
+}
+
+std::string describe_pixel_samples(const DisplaySettings& settings) {
+  const std::string n = std::to_string(settings.samples);
+  return n + " x " + n + " jittered eye rays, box filter";
+}
+
+RadiosityPicture render_radiosity_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
+                                          const Camera& camera, const DisplaySettings& settings) {
   if (B.size() != mesh.elements.size() || scene.polygons().size() != mesh.elements.size())
     throw std::invalid_argument("radiosity display: one B per element, and a scene of the mesh's elements");
   if (settings.samples < 1 || settings.samples > 16) throw std::invalid_argument("display: samples must lie in [1, 16]");
   const CameraFrame frame = camera_frame(camera, settings.width, settings.height);
   const std::vector<Color> vertex_B =
       settings.shading == Shading::Smooth ? vertex_radiosity(mesh, B) : std::vector<Color>();
-  Image image(settings.width, settings.height);
+  RadiosityPicture picture{Image(settings.width, settings.height), Image(settings.width, settings.height)};
   const int n = settings.samples;
   parallel_for(settings.height, settings.threads, [&](int y) {
     for (int x = 0; x < settings.width; ++x) {
       Rng rng(settings.seed, static_cast<std::uint64_t>(y) * settings.width + x);
-      Color sum(0.0);
+      Color sum(0.0), shown(0.0);
       for (int k = 0; k < n * n; ++k) {
         const double px = x + (k % n + rng.uniform()) / n, py = y + (k / n + rng.uniform()) / n;
         const Ray ray = primary_ray(frame, px, py);
@@ -56,12 +66,14 @@ Image render_radiosity(const FormFactorScene& scene, const Mesh& mesh, const std
               st.x * st.y * vertex_B[v[2]] + (1 - st.x) * st.y * vertex_B[v[3]];
         }
         const Color radiance = b / pi;  // L = B / pi
-        sum += settings.white > 0 ? glm::min(radiance, Color(settings.white)) : radiance;
+        sum += radiance;
+        shown += settings.white > 0 ? glm::min(radiance, Color(settings.white)) : radiance;
       }
-      image.at(x, y) = Pixel(sum / static_cast<double>(n * n));
+      picture.radiance.at(x, y) = Pixel(sum / static_cast<double>(n * n));
+      picture.shown.at(x, y) = Pixel(shown / static_cast<double>(n * n));
     }
   });
-  return image;
+  return picture;
 }
 
 }  // namespace gi

@@ -1,4 +1,5 @@
 #pragma once
+#include <string>
 #include <vector>
 
 #include "gi/image/image.hpp"
@@ -33,7 +34,20 @@ struct DisplaySettings {
 
 // `scene` must be built from element_shapes(mesh); B holds one radiosity per element.
 // Backs of surfaces and the void show black. Same image for any thread count.
+// Returns the picture to show: with each eye ray clamped to settings.white.
 Image render_radiosity(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
                        const Camera& camera, const DisplaySettings& settings);
+
+// The same eye rays, averaged twice: `radiance` the plain mean (linear, for a PFM
+// that another renderer can be compared with) and `shown` with each ray clamped to
+// settings.white first (the same as radiance when white is 0).
+struct RadiosityPicture {
+  Image radiance, shown;
+};
+RadiosityPicture render_radiosity_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
+                                          const Camera& camera, const DisplaySettings& settings);
+
+// "2 x 2 jittered eye rays, box filter": how the display samples each pixel.
+std::string describe_pixel_samples(const DisplaySettings& settings);
 
 }  // namespace gi

@@ -3,17 +3,27 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "gi/core/onb.hpp"
 #include "gi/core/parallel.hpp"
-#include "gi/core/rng.hpp"
+#include "gi/radiosity/form_factor_adaptive.hpp"
 #include "gi/radiosity/form_factor_formulas.hpp"
 #include "gi/radiosity/form_factor_hemicube.hpp"
+#include "gi/radiosity/overlaps.hpp"
 
 namespace gi {
 
 namespace {
 
 const char* const method_names[] = {"differential", "analytic", "monte-carlo", "hemicube"};
+
+// Checked before the World is built: an infinite corner would break the BVH builder.
+std::vector<Polygon> checked(std::vector<Polygon> polygons) {
+  for (std::size_t i = 0; i < polygons.size(); ++i) try {
+      check(polygons[i]);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("form-factor scene: polygon " + std::to_string(i) + ": " + e.what());
+    }
+  return polygons;
+}
 
 World world_of(const std::vector<Polygon>& polygons) {
   Scene scene;
@@ -29,45 +39,46 @@ World world_of(const std::vector<Polygon>& polygons) {
 
 double size_of(const Polygon& p) { return std::sqrt(p.area); }
 
-// A uniformly distributed point of the polygon: one of its two triangles, chosen by
-// area, and a uniform point in that.
-vec3 point_on(const Polygon& p, Rng& rng) {
-  const auto& c = p.corners;
-  const double a1 = length(cross(c[1] - c[0], c[2] - c[0]));
-  const double a2 = length(cross(c[2] - c[0], c[3] - c[0]));
-  const bool first = rng.uniform() * (a1 + a2) < a1;
-  const vec3 &b = first ? c[1] : c[2], &d = first ? c[2] : c[3];
-  const double r = std::sqrt(rng.uniform()), s = rng.uniform();
-  return (1 - r) * c[0] + r * (1 - s) * b + r * s * d;
-}
-
-std::vector<double> row_monte_carlo(const FormFactorScene& scene, const Polygon& from, int row,
-                                    const FormFactorSettings& settings) {
-  std::vector<double> f(scene.polygons().size(), 0.0);
-  Rng rng(settings.seed, static_cast<std::uint64_t>(row));
-  const Onb frame(from.normal);
-  const double offset = 1e-7 * size_of(from);
-  // Jittered directions: n x n strata of the unit square, mapped to the hemisphere
-  // with p(w) = cos(theta) / pi (Malley: uniform on the disc, lifted).
-  const int n = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(settings.rays))));
-  for (int k = 0; k < settings.rays; ++k) {
-    const double u = ((k % n) + rng.uniform()) / n, v = (((k / n) % n) + rng.uniform()) / n;
-    const double r = std::sqrt(u), phi = 2 * pi * v;
-    const vec3 d = r * std::cos(phi) * frame.u + r * std::sin(phi) * frame.v + std::sqrt(std::max(0.0, 1 - u)) * frame.w;
-    const Ray ray{point_on(from, rng) + offset * from.normal, d};
-    if (const auto hit = scene.first_hit(ray); hit && hit->front) f[hit->polygon] += 1.0;
+FormFactorRow row_differential(const FormFactorScene& scene, const Polygon& from, bool occlusion) {
+  const std::vector<Polygon>& to = scene.polygons();
+  FormFactorRow row{std::vector<double>(to.size(), 0.0), {}};
+  // From lifted centre to lifted centre, a hair off the surfaces: no polygon's own
+  // triangles lie in the way of the ray between them.
+  const vec3 x_i = lifted_centre(from) + 1e-7 * size_of(from) * from.normal;
+  double sum = 0;
+  for (std::size_t j = 0; j < to.size(); ++j) {
+    const vec3 x_j = lifted_centre(to[j]) + 1e-7 * size_of(to[j]) * to[j].normal;
+    if (!(length(x_j - x_i) > 0)) continue;  // the sender itself: F_ii = 0, not 0 / 0
+    const double f = form_factor_differential(x_i, from.normal, x_j, to[j].normal, to[j].area, 1.0);
+    row.F[j] = f > 0 && occlusion && !scene.visible(x_i, x_j) ? 0.0 : f;
+    sum += row.F[j];
   }
-  for (double& x : f) x /= settings.rays;
-  return f;
+  // The formula overestimates receivers that are close against their size, without
+  // bound (10.5 for unit squares 1/5 apart): a row that would send out more than all
+  // of the sender's energy is scaled to send out exactly all of it.
+  if (sum > 1)
+    for (double& f : row.F) f /= sum;
+  return row;
 }
 
-std::vector<double> row_hemicube(const FormFactorScene& scene, const Polygon& from, int resolution) {
+FormFactorRow row_analytic(const FormFactorScene& scene, const Polygon& from, const FormFactorSettings& settings) {
+  const std::vector<Polygon>& to = scene.polygons();
+  FormFactorRow row{std::vector<double>(to.size(), 0.0), std::vector<double>(to.size(), 0.0)};
+  for (std::size_t j = 0; j < to.size(); ++j) {
+    const Estimate f = form_factor_analytic_adaptive(from, to[j], settings.tolerance, settings.quadrature_order);
+    row.F[j] = f.value, row.error[j] = f.error;
+  }
+  return row;
+}
+
+FormFactorRow row_hemicube(const FormFactorScene& scene, const Polygon& from, int resolution) {
   // Kept per thread and reused: the weights depend only on the resolution, and the
   // item buffer's memory on nothing.
   thread_local HemicubeWeights weights{0, {}, {}};
   thread_local ItemBuffer buffer;
   if (weights.resolution != resolution) weights = hemicube_weights(resolution);
-  return form_factor_row_hemicube(scene.polygons(), from, weights, buffer);
+  const HemicubeRow row = hemicube_row(scene.polygons(), from, weights, buffer);
+  return {row.F, {}, row.sub_cell_receivers, row.sub_cell_missed};
 }
 
 }  // namespace
@@ -89,47 +100,54 @@ void check(const FormFactorSettings& s) {
   if (s.quadrature_order < 1 || s.quadrature_order > 16)
     throw std::invalid_argument("form factors: the quadrature order must lie in [1, 16]");
   if (s.rays < 1 || s.rays > 100'000'000) throw std::invalid_argument("form factors: rays must lie in [1, 10^8]");
+  if (!(s.tolerance >= 1e-14 && s.tolerance <= 0.1))
+    throw std::invalid_argument("form factors: the analytic tolerance must lie in [1e-14, 0.1]");
 }
 
 FormFactorScene::FormFactorScene(std::vector<Polygon> polygons)
-    : polygons_(std::move(polygons)), world_(world_of(polygons_)) {}
+    : polygons_(checked(std::move(polygons))), world_(world_of(polygons_)) {
+  if (const auto pair = find_overlap(polygons_, world_.bvh))
+    throw std::invalid_argument("form-factor scene: polygons " + std::to_string(pair->first) + " and " +
+                                std::to_string(pair->second) +
+                                " lie in one plane and overlap; remove one, or move it off the other");
+}
 
 std::optional<FormFactorScene::RayHit> FormFactorScene::first_hit(const Ray& ray) const {
   const std::optional<Hit> hit = closest_hit(world_, ray);
   if (!hit) return std::nullopt;
-  const int polygon = hit->object / 2;
-  return RayHit{polygon, dot(ray.direction, polygons_[polygon].normal) < 0, hit->t};
+  // Which side by the triangle hit, not the polygon's mean normal: on a twisted
+  // polygon the two differ, and a ray grazing it must not count its back as its front.
+  return RayHit{hit->object / 2, dot(ray.direction, hit->normal) < 0, hit->t};
 }
 
 bool FormFactorScene::visible(const vec3& from, const vec3& to) const {
   const vec3 d = to - from;
   const double distance = length(d);
+  if (!(distance > 0)) return true;
   const double margin = 1e-7 * distance;
   return !any_hit(world_, Ray{from, d / distance, margin, distance - margin});
 }
 
-std::vector<double> form_factor_row(const FormFactorScene& scene, const Polygon& from, int row,
-                                    const FormFactorSettings& settings) {
+FormFactorRow form_factor_row_with_diagnostics(const FormFactorScene& scene, const Polygon& from, int row,
+                                               const FormFactorSettings& settings) {
   check(settings);
-  const std::vector<Polygon>& to = scene.polygons();
-  std::vector<double> f(to.size(), 0.0);
+  check(from);
   switch (settings.method) {
-    case FormFactorMethod::Differential: {
-      const double lift = 1e-7 * size_of(from);  // off the surfaces, so they do not block themselves
-      for (std::size_t j = 0; j < to.size(); ++j) {
-        const double h = !settings.occlusion || scene.visible(from.centre + lift * from.normal,
-                                                              to[j].centre + lift * to[j].normal);
-        f[j] = form_factor_differential(from.centre, from.normal, to[j].centre, to[j].normal, to[j].area, h);
-      }
-      return f;
+    case FormFactorMethod::Differential: return row_differential(scene, from, settings.occlusion);
+    case FormFactorMethod::Analytic: return row_analytic(scene, from, settings);
+    case FormFactorMethod::MonteCarlo: {
+      FormFactorRow r{form_factor_row_monte_carlo(scene, from, row, settings.rays, settings.seed), {}};
+      for (double f : r.F) r.error.push_back(std::sqrt(f * (1 - f) / settings.rays));
+      return r;
     }
-    case FormFactorMethod::Analytic:
-      for (std::size_t j = 0; j < to.size(); ++j) f[j] = form_factor_analytic(from, to[j], settings.quadrature_order);
-      return f;
-    case FormFactorMethod::MonteCarlo: return row_monte_carlo(scene, from, row, settings);
     case FormFactorMethod::Hemicube: return row_hemicube(scene, from, settings.hemicube_resolution);
   }
-  return f;
+  return {};
+}
+
+std::vector<double> form_factor_row(const FormFactorScene& scene, const Polygon& from, int row,
+                                    const FormFactorSettings& settings) {
+  return form_factor_row_with_diagnostics(scene, from, row, settings).F;
 }
 
 FormFactorMatrix form_factor_matrix(const FormFactorScene& scene, const FormFactorSettings& settings, int threads) {

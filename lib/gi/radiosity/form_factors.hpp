@@ -13,12 +13,17 @@ namespace gi {
 // The lecture's ways to compute a row of form factors F_ij, from one polygon i (a
 // patch or an element) to every polygon j of the scene, behind one interface:
 //   Differential  the differential formula from centre to centre, times H_ij from a
-//                 shadow ray between the centres (form_factor_formulas.hpp)
-//   Analytic      Lambert's contour integral, exact from a point, averaged over i with
-//                 Gauss-Legendre points: exact without occlusion, blind to it
+//                 shadow ray between the centres (form_factor_formulas.hpp); a row that
+//                 would sum to more than 1 (close receivers) is scaled to sum to 1
+//   Analytic      Lambert's contour integral, exact from a point, integrated over i
+//                 adaptively until the error estimate meets `tolerance`
+//                 (form_factor_analytic_adaptive): exact without occlusion, blind to it
 //   MonteCarlo    Nusselt's analogue by sampling: rays from random points of i in
 //                 cosine-distributed directions; F_ij = the fraction that hits j first
 //   Hemicube      the hemicube at i's centre (form_factor_hemicube.hpp)
+// Every method gives F_ii = 0, and finite values: no NaN for any valid input. A
+// twisted polygon (within planarity_tolerance) is seen from its lifted centre, so
+// neither it nor the elements it was cut into hide its view.
 enum class FormFactorMethod { Differential, Analytic, MonteCarlo, Hemicube };
 std::string name(FormFactorMethod method);  // "differential", "analytic", "monte-carlo", "hemicube"
 std::vector<std::string> form_factor_method_names();
@@ -27,16 +32,18 @@ FormFactorMethod form_factor_method_from_name(const std::string& name);  // thro
 struct FormFactorSettings {
   FormFactorMethod method = FormFactorMethod::Hemicube;
   int hemicube_resolution = 100;  // Hemicube: cells across the top face (even, 2..2000)
-  int quadrature_order = 3;       // Analytic: order x order points over the sender (1..16)
-  int rays = 1024;                // MonteCarlo: rays per row (1..10^8)
+  int quadrature_order = 3;       // Analytic: the first Gauss order over the sender (1..16), doubled until converged
+  int rays = 1024;                // MonteCarlo: rays per row (1..10^8), any count: n^2 stratified plus the rest at random
   bool occlusion = true;          // Differential: test visibility between the centres
   std::uint64_t seed = 1;         // MonteCarlo: row i draws from stream i of this seed
+  double tolerance = 1e-10;       // Analytic: relative error of each form factor (1e-14..0.1)
 };
 void check(const FormFactorSettings& settings);  // throws std::invalid_argument
 
 // What form factors are computed against: the receiving polygons (usually a mesh's
 // elements, element_shapes(mesh)) and a World of them for the methods that cast rays,
-// each polygon two triangles there.
+// each polygon two triangles there. Throws std::invalid_argument, naming the polygon,
+// for an invalid one (check), and naming both for two that overlap (overlaps.hpp).
 class FormFactorScene {
  public:
   explicit FormFactorScene(std::vector<Polygon> polygons);
@@ -45,7 +52,7 @@ class FormFactorScene {
   // The polygon a ray meets first (from either side: a back face blocks too).
   struct RayHit {
     int polygon;
-    bool front;  // the ray arrives on the polygon's lit side
+    bool front;  // the ray arrives on the lit side of the triangle it hits
     double t;    // where along the ray
   };
   std::optional<RayHit> first_hit(const Ray& ray) const;
@@ -59,11 +66,27 @@ class FormFactorScene {
 };
 
 // F from `from` to every polygon of the scene. `row` picks the random stream
-// (MonteCarlo), so that a matrix is the same for any thread count.
+// (MonteCarlo), so that a matrix is the same for any thread count. Throws
+// std::invalid_argument for bad settings or an invalid `from` (check).
 std::vector<double> form_factor_row(const FormFactorScene& scene, const Polygon& from, int row,
                                     const FormFactorSettings& settings);
 
+// A row with what each method knows about its own accuracy.
+struct FormFactorRow {
+  std::vector<double> F;      // F_ij for every polygon j of the scene
+  std::vector<double> error;  // Analytic: each entry's error estimate; MonteCarlo: its standard error
+                              // (binomial, an upper bound with stratification); empty otherwise
+  int sub_cell_receivers = 0;  // Hemicube: receivers whose image is smaller than a cell (aliased)
+  int sub_cell_missed = 0;     // Hemicube: of those, how many got no cell at all (F = 0)
+};
+FormFactorRow form_factor_row_with_diagnostics(const FormFactorScene& scene, const Polygon& from, int row,
+                                               const FormFactorSettings& settings);
+
 // Every row, from every polygon of the scene to every other, in parallel (0: all cores).
 FormFactorMatrix form_factor_matrix(const FormFactorScene& scene, const FormFactorSettings& settings, int threads);
+
+// Monte Carlo's row (form_factor_monte_carlo.cpp); form_factor_row calls it.
+std::vector<double> form_factor_row_monte_carlo(const FormFactorScene& scene, const Polygon& from, int row,
+                                                int rays, std::uint64_t seed);
 
 }  // namespace gi

@@ -1,7 +1,6 @@
 #include "gi/radiosity/hemicube.hpp"
 
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 
 #include "gi/core/not_implemented.hpp"
@@ -46,14 +45,24 @@ std::optional<HemicubeCell> project_to_hemicube(const vec3& d, int resolution) {
 }
 
 double HemicubeWeights::sum() const {
-  return std::accumulate(top.begin(), top.end(), 0.0) + 4 * std::accumulate(side.begin(), side.end(), 0.0);
+  // Neumaier's compensated sum: 10^7 cells at resolution 2000 would otherwise leave 1e-10.
+  double sum = 0, lost = 0;
+  const auto add = [&](double x) {
+    const double t = sum + x;
+    lost += std::abs(sum) >= std::abs(x) ? (sum - t) + x : (x - t) + sum;
+    sum = t;
+  };
+  for (double dF : top) add(dF);
+  for (int face = 0; face < 4; ++face)
+    for (double dF : side) add(dF);
+  return sum + lost;
 }
 
 HemicubeWeights hemicube_weights(int resolution) {
   if (resolution < 2 || resolution > 2000 || resolution % 2)
     throw std::invalid_argument("hemicube: the resolution must be even and lie in [2, 2000]");
   HemicubeWeights w{resolution, std::vector<double>(resolution * resolution),
-                    std::vector<double>(resolution / 2 * resolution)};
+                    std::vector<double>(resolution / 2 * resolution), 0.0};
   const double h = 2.0 / resolution, area = h * h;  // cell side and area
   for (int row = 0; row < resolution; ++row)
     for (int column = 0; column < resolution; ++column)
@@ -61,6 +70,11 @@ HemicubeWeights hemicube_weights(int resolution) {
   for (int row = 0; row < resolution / 2; ++row)
     for (int column = 0; column < resolution; ++column)
       w.side[row * resolution + column] = delta_form_factor_side(-1 + (column + 0.5) * h, (row + 0.5) * h, area);
+  // The midpoint rule's sum is 1 + O(1/res^2) (1 + 5.4e-5 at res 100): scaled to 1, so
+  // that a closed room's rows sum to 1 and energy is neither made nor lost.
+  w.unnormalised_sum = w.sum();
+  for (double& dF : w.top) dF /= w.unnormalised_sum;
+  for (double& dF : w.side) dF /= w.unnormalised_sum;
   return w;
 }
 

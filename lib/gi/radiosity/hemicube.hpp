@@ -41,12 +41,15 @@ struct HemicubeCell {
 };
 std::optional<HemicubeCell> project_to_hemicube(const vec3& direction, int resolution);
 
-// The delta form factors of every cell, computed once per resolution.
+// The delta form factors of every cell, computed once per resolution and scaled so
+// that they sum to 1: the midpoint values dF above sum to 1 + O(1/res^2), and a room
+// whose rows do not sum to 1 gains or loses energy at every bounce.
 struct HemicubeWeights {
-  int resolution;             // cells across the top face (even, 2..2000)
-  std::vector<double> top;    // res x res, row-major (row = y)
-  std::vector<double> side;   // res/2 rows of res, row 0 at the horizon; the same for all four sides
-  double sum() const;         // 1 up to the cells' discretisation
+  int resolution;                 // cells across the top face (even, 2..2000)
+  std::vector<double> top;        // res x res, row-major (row = y)
+  std::vector<double> side;       // res/2 rows of res, row 0 at the horizon; the same for all four sides
+  double unnormalised_sum = 1.0;  // what the midpoint values summed to before the scaling
+  double sum() const;             // 1 to round-off (a compensated sum)
 };
 HemicubeWeights hemicube_weights(int resolution);  // throws std::invalid_argument for odd or bad res
 

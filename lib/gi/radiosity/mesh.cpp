@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "gi/radiosity/overlaps.hpp"
+
 namespace gi {
 
 namespace {
@@ -28,11 +30,19 @@ Mesh make_mesh(const std::vector<Surface>& surfaces, const MeshSettings& setting
   if (!(settings.patch_size > 0)) throw std::invalid_argument("mesh: the patch size must be > 0");
   if (settings.elements_per_side < 1 || settings.elements_per_side > 64)
     throw std::invalid_argument("mesh: elements per patch side must lie in [1, 64]");
+  for (const Surface& s : surfaces) check(s);
+  // Surfaces that lie in one plane and overlap: few, so every pair is compared.
+  std::vector<Polygon> shapes;
+  for (const Surface& s : surfaces) shapes.push_back(make_polygon(s.corners));
+  for (std::size_t i = 0; i < shapes.size(); ++i)
+    for (std::size_t j = i + 1; j < shapes.size(); ++j)
+      if (overlapping(shapes[i], shapes[j]))
+        throw std::invalid_argument("surfaces '" + surfaces[i].name + "' and '" + surfaces[j].name +
+                                    "' lie in one plane and overlap; remove one, or move it off the other");
   Mesh mesh;
   mesh.surfaces = surfaces;
   const int m = settings.elements_per_side;
   for (int s = 0; s < static_cast<int>(surfaces.size()); ++s) {
-    check(surfaces[s]);
     const std::array<vec3, 4>& c = surfaces[s].corners;
     const int nu = pieces(std::max(length(c[1] - c[0]), length(c[2] - c[3])), settings.patch_size);
     const int nv = pieces(std::max(length(c[3] - c[0]), length(c[2] - c[1])), settings.patch_size);

@@ -60,7 +60,8 @@ struct MeshSettings {
 // Cuts every surface into ceil(edge / patch_size) patches along each edge pair
 // (bilinearly, so the patches tile the quadrilateral exactly) and each patch into
 // elements. Throws std::invalid_argument for bad settings, a bad surface (see
-// make_polygon; reflectance or emission negative or not finite) or more than 10^6 elements.
+// make_polygon; reflectance or emission negative or not finite), two surfaces that
+// overlap in one plane (overlaps.hpp; the message names both) or more than 10^6 elements.
 Mesh make_mesh(const std::vector<Surface>& surfaces, const MeshSettings& settings);
 
 // The elements' shapes, in order: what form factors are computed between.

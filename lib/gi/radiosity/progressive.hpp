@@ -2,6 +2,7 @@
 #include <functional>
 #include <vector>
 
+#include "gi/radiosity/form_factors.hpp"
 #include "gi/radiosity/mesh.hpp"
 #include "gi/radiosity/solver.hpp"
 
@@ -20,6 +21,11 @@ namespace gi {
 // The form factors from patch p to every element, computed when p shoots.
 using ShooterRow = std::function<std::vector<double>(int patch)>;
 
+// The usual ShooterRow: patch p's row by `settings` (a hemicube at the patch's centre
+// by default) against `receivers`, which must be built from element_shapes(mesh).
+// It keeps references to `receivers` and `mesh`: they must outlive it.
+ShooterRow patch_shooter(const FormFactorScene& receivers, const Mesh& mesh, const FormFactorSettings& settings);
+
 // One shot from `patch`: its unshot radiosity dB_p is the area-weighted mean of its
 // elements' unshot radiosities, which are cleared (shot); every element j then
 // receives rho_j dB_p F_pj A_p / A_j into both its radiosity B_j and its unshot
@@ -37,6 +43,12 @@ Color ambient_term(const std::vector<double>& area, const std::vector<Color>& rh
 // B_i + rho_i * ambient for every element.
 std::vector<Color> with_ambient(const std::vector<double>& area, const std::vector<Color>& rho,
                                 const std::vector<Color>& B, const std::vector<Color>& unshot);
+
+// The patch that shoots next: the one with the most unshot power sum_e dB_e A_e over
+// its elements, added over the three channels (the first such patch on a tie). By
+// power, not radiosity: a small bright patch holds less light than a large dim one.
+int choose_shooter(const std::vector<Patch>& patches, const std::vector<double>& area,
+                   const std::vector<Color>& unshot);
 
 // Shoots from the mesh's patches (each the group of its elements; unshot radiosity
 // is kept per element and a patch's is their area-weighted mean) until the unshot

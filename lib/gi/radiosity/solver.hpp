@@ -10,8 +10,9 @@ namespace gi {
 
 // Every solver takes a system and these options and returns a SolverResult, so that
 // all of them fit in one table and one chart.
-enum class SolveStatus { Converged, Diverged, StoppedAtLimit };
-std::string status_name(SolveStatus status);  // "converged", "diverged", "stopped at the limit"
+// Singular: the direct solver met a zero pivot; B is NaN, there is no solution.
+enum class SolveStatus { Converged, Diverged, StoppedAtLimit, Singular };
+std::string status_name(SolveStatus status);  // "converged", "diverged", "stopped at the limit", "singular"
 
 // One row of a solver's history, recorded after every iteration (Jacobi, Gauss-Seidel)
 // or step (Southwell, progressive refinement).
@@ -34,6 +35,8 @@ struct SolverOptions {
   int record_every = 1;     // history rows: every step, or every k-th (Southwell on big meshes)
 };
 
+// The history holds at least one row: the last step run. A solver may stop before
+// max_steps (converged, diverged), so look steps up with find_step, not by index.
 struct SolverResult {
   std::string method;
   std::vector<Color> B;
@@ -41,6 +44,14 @@ struct SolverResult {
   std::vector<SolverStep> history;
   SolveStatus status = SolveStatus::StoppedAtLimit;
 };
+
+// The history row of step `step`, or nullptr if the solver stopped before it or did
+// not record it (record_every).
+const SolverStep* find_step(const SolverResult& result, int step);
+
+// "converged after 12 iterations", "stopped at the limit after 30 iterations" ...
+// `unit` is what a step is called ("iteration", "step", "shot").
+std::string stop_reason(const SolverResult& result, const std::string& unit);
 
 // Records history rows and decides when to stop: converged below the tolerance,
 // diverged when the residual is not finite or has grown a million-fold. Shared by
@@ -55,6 +66,9 @@ class SolverMonitor {
   // (O(n^2), like an iteration). Time spent here is not counted as solving time.
   bool stop_after(int step, const std::vector<Color>& B, const std::vector<Color>& r = {});
   SolverResult finish(std::vector<Color> B, std::vector<Color> r = {});
+  // A solver that cannot go on (a singular system): one history row of NaNs for
+  // step `step`, B all NaN, and `status`.
+  SolverResult fail(SolveStatus status, int step);
 
  private:
   SolverResult result_;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include "gi/radiosity/solver.hpp"
@@ -9,8 +10,21 @@ std::string status_name(SolveStatus status) {
     case SolveStatus::Converged: return "converged";
     case SolveStatus::Diverged: return "diverged";
     case SolveStatus::StoppedAtLimit: return "stopped at the limit";
+    case SolveStatus::Singular: return "singular";
   }
   return "?";
+}
+
+const SolverStep* find_step(const SolverResult& result, int step) {
+  // Rows are in step order; the last one is the step the solver stopped at.
+  const auto it = std::lower_bound(result.history.begin(), result.history.end(), step,
+                                   [](const SolverStep& row, int s) { return row.step < s; });
+  return it != result.history.end() && it->step == step ? &*it : nullptr;
+}
+
+std::string stop_reason(const SolverResult& result, const std::string& unit) {
+  const int steps = result.history.empty() ? 0 : result.history.back().step;
+  return status_name(result.status) + " after " + std::to_string(steps) + " " + unit + (steps == 1 ? "" : "s");
 }
 
 namespace {
@@ -75,6 +89,19 @@ bool SolverMonitor::stop_after(int step, const std::vector<Color>& B, const std:
   }
   clock_.restart();
   return stop;
+}
+
+SolverResult SolverMonitor::fail(SolveStatus status, int step) {
+  SolverStep row;
+  row.step = step;
+  row.residual_2 = row.residual_inf = row.unshot = NAN;
+  if (options_.reference) row.error = NAN;
+  row.seconds = solving_seconds_ + clock_.seconds();
+  result_.history.push_back(row);
+  result_.status = status;
+  result_.B.assign(system_.size(), Color(NAN));
+  result_.residual.assign(system_.size(), Color(NAN));
+  return std::move(result_);
 }
 
 SolverResult SolverMonitor::finish(std::vector<Color> B, std::vector<Color> r) {

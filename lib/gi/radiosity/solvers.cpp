@@ -23,7 +23,7 @@ SolverResult solve_direct(const RadiositySystem& s, const SolverOptions& options
       int pivot = column;  // the largest entry below, for stability
       for (int i = column + 1; i < n; ++i)
         if (std::abs(k(i, column)) > std::abs(k(pivot, column))) pivot = i;
-      if (std::abs(k(pivot, column)) < 1e-300) return monitor.finish(std::vector<Color>(n, Color(NAN)));
+      if (std::abs(k(pivot, column)) < 1e-300) return monitor.fail(SolveStatus::Singular, 1);
       for (int j = column; j <= n; ++j) std::swap(k(column, j), k(pivot, j));
       for (int i = column + 1; i < n; ++i) {
         const double factor = k(i, column) / k(column, column);

@@ -9,7 +9,8 @@ namespace gi {
 
 // Gaussian elimination with partial pivoting, per colour channel: O(n^3) time and
 // O(n^2) memory, exact to round-off. The reference for small meshes; it does not
-// scale, which is why the iterative methods exist.
+// scale, which is why the iterative methods exist. A singular K (a zero pivot) gives
+// the status Singular, B all NaN and one history row.
 SolverResult solve_direct(const RadiositySystem& system, const SolverOptions& options = {});
 
 // One Jacobi iteration: every element gathers from the previous iterate only,

@@ -1,8 +1,8 @@
 #include "gi/radiosity/vertex_colours.hpp"
 
-#include <fstream>
 #include <stdexcept>
 
+#include "gi/core/atomic_file.hpp"
 #include "gi/core/not_implemented.hpp"
 #include "gi/image/image_io.hpp"
 
@@ -29,23 +29,24 @@ std::vector<Color> vertex_radiosity(const Mesh& mesh, const std::vector<Color>& 
 void write_ply(const Mesh& mesh, const std::vector<Color>& vertex_B, double exposure,
                const std::filesystem::path& file) {
   if (vertex_B.size() != mesh.vertices.size()) throw std::invalid_argument("PLY: one colour per vertex");
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot write " + file.string());
-  out << "ply\nformat ascii 1.0\ncomment gi-workbench radiosity: vertex colour = sRGB(exposure * B / pi)\n"
-      << "element vertex " << mesh.vertices.size() << "\nproperty float x\nproperty float y\nproperty float z\n"
-      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-      << "element face " << mesh.elements.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const Color& b : vertex_B)  // a garbage mesh is never written silently
+    if (!is_finite(b)) throw std::runtime_error("refusing to write " + file.string() + ": a vertex radiosity is NaN or infinite");
   const auto byte = [&](double b) {
     return static_cast<int>(std::lround(255 * srgb_encode(std::clamp(exposure * b / pi, 0.0, 1.0))));
   };
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    const vec3& p = mesh.vertices[v];
-    out << p.x << ' ' << p.y << ' ' << p.z << ' ' << byte(vertex_B[v].x) << ' ' << byte(vertex_B[v].y) << ' '
-        << byte(vertex_B[v].z) << '\n';
-  }
-  for (const Element& e : mesh.elements)
-    out << "4 " << e.vertices[0] << ' ' << e.vertices[1] << ' ' << e.vertices[2] << ' ' << e.vertices[3] << '\n';
-  if (!out) throw std::runtime_error("error writing " + file.string());
+  write_atomically(file, [&](std::ostream& out) {
+    out << "ply\nformat ascii 1.0\ncomment gi-workbench radiosity: vertex colour = sRGB(exposure * B / pi)\n"
+        << "element vertex " << mesh.vertices.size() << "\nproperty float x\nproperty float y\nproperty float z\n"
+        << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+        << "element face " << mesh.elements.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+      const vec3& p = mesh.vertices[v];
+      out << p.x << ' ' << p.y << ' ' << p.z << ' ' << byte(vertex_B[v].x) << ' ' << byte(vertex_B[v].y) << ' '
+          << byte(vertex_B[v].z) << '\n';
+    }
+    for (const Element& e : mesh.elements)
+      out << "4 " << e.vertices[0] << ' ' << e.vertices[1] << ' ' << e.vertices[2] << ' ' << e.vertices[3] << '\n';
+  });
 }
 
 }  // namespace gi

@@ -15,7 +15,8 @@ std::vector<Color> vertex_radiosity(const Mesh& mesh, const std::vector<Color>& 
 
 // The mesh as an ASCII PLY file with a colour per vertex (MeshLab, Blender): the
 // vertex radiosity as radiance L = B / pi, times `exposure`, clamped and
-// sRGB-encoded to 8 bits. Faces are the elements (quadrilaterals).
+// sRGB-encoded to 8 bits. Faces are the elements (quadrilaterals). Written
+// atomically; throws std::runtime_error for a NaN or infinite radiosity.
 void write_ply(const Mesh& mesh, const std::vector<Color>& vertex_B, double exposure,
                const std::filesystem::path& file);
 

@@ -1,5 +1,6 @@
 #include "gi/raytrace/render.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,6 +13,24 @@ namespace gi {
 
 namespace {
 constexpr int tile_size = 32;
+}
+
+std::string describe_pixel_samples(const Sampling& s) {
+  const std::string grid = std::to_string(s.n) + " x " + std::to_string(s.n) + " ";
+  switch (s.sampler) {
+    case Sampler::Centre: return "one eye ray through the pixel centre";
+    case Sampler::Grid: return grid + "eye rays on a regular grid, box filter";
+    case Sampler::Random: return grid + "uniformly random eye rays, box filter";
+    case Sampler::Jittered: return grid + "jittered eye rays, box filter";
+    case Sampler::Adaptive:
+    {
+      char threshold[32];
+      std::snprintf(threshold, sizeof threshold, "%g", s.threshold);
+      return "adaptive (Whitted): pixel corners, subdivided up to " + std::to_string(s.max_subdivisions) +
+             " times where they differ by more than " + threshold + ", box filter";
+    }
+  }
+  return "?";
 }
 
 void check(const RenderSettings& s) {

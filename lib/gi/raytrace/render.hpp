@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "gi/image/image.hpp"
@@ -25,6 +26,10 @@ struct RenderResult {
   std::vector<int> samples;  // eye rays per pixel, row-major
   double seconds = 0;        // wall-clock time of the render loop alone
 };
+
+// How the eye rays sample each pixel, for a reader who wants the same picture:
+// "one eye ray through the pixel centre", "4 x 4 jittered eye rays, box filter" ...
+std::string describe_pixel_samples(const Sampling& sampling);
 
 // Throws std::invalid_argument for settings out of range (size, depth, epsilon).
 void check(const RenderSettings& settings);

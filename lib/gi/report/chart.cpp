@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+
+#include "gi/core/atomic_file.hpp"
 
 namespace gi {
 
@@ -152,10 +153,7 @@ std::string to_svg(const Chart& chart, int width, int height) {
 }
 
 void write_svg(const Chart& chart, const std::filesystem::path& file, int width, int height) {
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot write " + file.string());
-  out << to_svg(chart, width, height);
+  write_atomically(file, [&](std::ostream& out) { out << to_svg(chart, width, height); });
 }
 
 }  // namespace gi

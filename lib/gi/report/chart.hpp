@@ -24,6 +24,7 @@ struct Chart {
 // title and a legend. Points that are not finite, or not positive on a log axis,
 // are left out.
 std::string to_svg(const Chart& chart, int width = 720, int height = 480);
+// Creates parent folders; atomic (gi/core/atomic_file.hpp); throws WriteError.
 void write_svg(const Chart& chart, const std::filesystem::path& file, int width = 720, int height = 480);
 
 // Tick positions covering [lo, hi]: 1-2-5 steps on a linear axis, powers of ten on

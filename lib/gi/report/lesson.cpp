@@ -1,29 +1,198 @@
 #include "gi/report/lesson.hpp"
 
+#include <signal.h>
+
+#include <cerrno>
 #include <exception>
 #include <iostream>
 #include <string>
 
+#include "gi/core/atomic_file.hpp"
 #include "gi/core/not_implemented.hpp"
-#include "gi/report/options.hpp"
+#include "gi/image/image_io.hpp"
 
 namespace gi {
 
-int run_lesson(const std::string& name, const std::function<int()>& body) {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The exit status and the one line on stderr for what a lesson threw.
+int report_failure(const std::string& name, std::string& status) {
   try {
-    return body();
+    throw;
   } catch (const OptionError& e) {
     std::cerr << name << ": error: " << e.what() << " (try --help)\n";
+    status = std::string("bad input: ") + e.what();
     return 2;
   } catch (const NotImplemented& e) {
     // The BVH (lab 5) finds the hits of every rendering lesson; until it is written
     // they can fall back on testing every primitive.
     const bool bvh = std::string(e.what()).find("exercise 5.") != std::string::npos;
     std::cerr << name << ": " << e.what() << (bvh ? " (until then, render with --accel brute-force)" : "") << '\n';
+    status = std::string("stopped: ") + e.what();
     return 3;
   } catch (const std::exception& e) {
     std::cerr << name << ": error: " << e.what() << '\n';
+    status = std::string("failed: ") + e.what();
     return 1;
+  }
+}
+
+// A temporary left by a run that was killed: ".<name>.<pid>.<n>.partial" whose
+// process no longer exists. Those of a run still going are left alone.
+bool abandoned(const fs::path& file) {
+  if (!is_partial_file(file)) return false;
+  std::string name = file.filename().string();
+  name.resize(name.size() - std::string(".partial").size());
+  name.erase(name.rfind('.'));  // the counter
+  const std::string pid = name.substr(name.rfind('.') + 1);
+  if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 9) return false;
+  return ::kill(std::stoi(pid), 0) != 0 && errno == ESRCH;
+}
+
+Output output(OutputKind kind, const std::string& caption, const fs::path& file) {
+  Output o;
+  o.kind = kind;
+  o.caption = caption;
+  o.file = file;
+  return o;
+}
+
+}  // namespace
+
+Lesson::Lesson(std::string name, std::string summary, LessonFeatures features)
+    : name_(std::move(name)), options_(name_, std::move(summary)) {
+  add_common_options(options_, common_, name_, features.threads, features.seed);
+}
+
+void Lesson::add_image_size(int& width, int& height, const std::string& what) {
+  options_.add("--width", width, what + " width in pixels", min_image_size, max_image_size)
+      .add("--height", height, what + " height in pixels", min_image_size, max_image_size);
+}
+
+void Lesson::add_check(std::function<void()> check) { checks_.push_back(std::move(check)); }
+
+void Lesson::prepare_folder() {
+  const std::string& text = common_.out;
+  if (text.empty()) throw OptionError("--out needs a folder, got an empty name");
+  if (text[0] == '-')
+    throw OptionError("--out must name a folder, got '" + text + "' (for a folder of that name write ./" + text + ")");
+  out_ = text;
+  std::error_code error;
+  if (fs::exists(out_, error) && !fs::is_directory(out_, error))
+    throw OptionError("--out " + text + " is a file, not a folder");
+  fs::create_directories(out_, error);
+  if (error) throw OptionError("--out: cannot create the folder " + text + ": " + error.message());
+  try {  // a folder that exists may still refuse files (read-only file system)
+    write_atomically(out_ / ".write-test", [](std::ostream&) {});
+    fs::remove(out_ / ".write-test", error);
+  } catch (const WriteError& e) {
+    throw OptionError("--out: cannot write into " + text + " (" + e.what() + ")");
+  }
+  for (const fs::directory_entry& entry : fs::directory_iterator(out_, error))
+    if (abandoned(entry.path())) fs::remove(entry.path(), error);
+  // The record of an earlier run would describe files this run may not write: a run
+  // that is killed leaves no record, rather than a wrong one.
+  fs::remove(out_ / "outputs.json", error);
+}
+
+int Lesson::run(int argc, const char* const* argv, const std::function<void()>& body) {
+  command_.assign(argv, argv + argc);
+  bool started = false;
+  std::string status = "complete";
+  int code = 0;
+  try {
+    if (!options_.parse(argc, argv)) return 0;
+    for (const auto& check : checks_) check();
+    prepare_folder();
+    started = true;
+    body();
+    check_outputs();
+  } catch (...) {
+    code = report_failure(name_, status);
+  }
+  if (started) {
+    try {
+      write_record(status);
+    } catch (const std::exception& e) {
+      if (code == 0) std::cerr << name_ << ": error: " << e.what() << '\n';
+      if (code == 0) code = 1;
+    }
+  }
+  return code;
+}
+
+void Lesson::check_outputs() const {
+  std::error_code error;
+  for (const Output& o : outputs_) {
+    if (o.file.empty()) continue;
+    const auto check = [&](const fs::path& file, std::uintmax_t bytes) {
+      if (fs::file_size(out_ / file, error) != bytes || error)
+        throw std::runtime_error((out_ / file).string() + " is missing or changed since this run wrote it");
+    };
+    check(o.file, o.bytes);
+    if (!o.linear.empty()) check(o.linear, o.linear_bytes);
+  }
+}
+
+void Lesson::write_record(const std::string& status) const {
+  const std::string json = outputs_json(name_, command_, status, outputs_);
+  write_atomically(out_ / "outputs.json", [&](std::ostream& out) { out << json; });
+}
+
+void Lesson::picture(const Image& radiance, const std::string& stem, const std::string& caption, const View& view,
+                     double exposure, const Image* shown) {
+  write_png(shown ? *shown : radiance, path(stem + ".png"), exposure);
+  write_pfm(radiance, path(stem + ".pfm"));
+  Output o = output(OutputKind::Picture, caption, stem + ".png");
+  o.bytes = fs::file_size(path(stem + ".png"));
+  o.linear = stem + ".pfm";
+  o.linear_bytes = fs::file_size(path(stem + ".pfm"));
+  o.exposure = exposure;
+  o.view = view;
+  outputs_.push_back(std::move(o));
+}
+
+void Lesson::diagram(const Image& image, const std::string& stem, const std::string& caption, double exposure) {
+  file(stem + ".png", OutputKind::Diagram, caption, [&](const fs::path& p) { write_png(image, p, exposure); });
+}
+
+void Lesson::table(const Table& table, const std::string& stem) {
+  table.print();
+  file(stem + ".csv", OutputKind::Table, table.title(), [&](const fs::path& p) { table.write_csv(p); });
+}
+
+void Lesson::chart(const Chart& chart, const std::string& stem) {
+  file(stem + ".svg", OutputKind::Chart, chart.title, [&](const fs::path& p) { write_svg(chart, p); });
+}
+
+void Lesson::file(const std::string& name, OutputKind kind, const std::string& caption,
+                  const std::function<void(const fs::path&)>& write) {
+  write(path(name));
+  record(name, kind, caption);
+}
+
+void Lesson::record(const fs::path& file, OutputKind kind, const std::string& caption) {
+  // Names inside the folder are kept relative to it, whichever way they were given.
+  const fs::path inside = file.lexically_relative(out_);
+  const fs::path relative = !inside.empty() && *inside.begin() != ".." ? inside : file;
+  Output o = output(kind, caption, relative);
+  o.bytes = fs::file_size(out_ / relative);
+  outputs_.push_back(std::move(o));
+}
+
+void Lesson::say(const std::string& line) {
+  std::cout << line << '\n' << std::flush;
+  outputs_.push_back(output(OutputKind::Text, line, {}));
+}
+
+int run_lesson(const std::string& name, const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (...) {
+    std::string status;
+    return report_failure(name, status);
   }
 }
 

@@ -21,6 +21,17 @@ long long parse_integer(const std::string& name, const std::string& text) {
   return v;
 }
 
+// All of 0 .. 2^64 - 1: strtoull alone would take "-1" as 2^64 - 1.
+std::uint64_t parse_unsigned(const std::string& name, const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || *end != '\0')
+    throw OptionError(name + " expects a whole number from 0 to 18446744073709551615, got '" + text + "'");
+  if (errno == ERANGE) throw OptionError(name + " must be at most 18446744073709551615, got " + text);
+  return v;
+}
+
 double parse_real(const std::string& name, const std::string& text) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
@@ -74,6 +85,17 @@ Options& Options::add(const std::string& name, int& value, const std::string& he
                      }});
 }
 
+Options& Options::add(const std::string& name, int& value, const std::string& help, int min, int max,
+                      const Rule& rule) {
+  return add_option({name, help, std::to_string(value), range_text(min, max) + ", " + rule.name, true,
+                     [&value, name, min, max, rule](const std::string& t) {
+                       const long long v = parse_integer(name, t);
+                       check_range<long long>(name, v, min, max, t);
+                       if (!rule.holds(v)) throw OptionError(name + " must be " + rule.name + ", got " + t);
+                       value = static_cast<int>(v);
+                     }});
+}
+
 Options& Options::add(const std::string& name, double& value, const std::string& help, double min, double max) {
   std::ostringstream d;
   d << value;
@@ -85,11 +107,8 @@ Options& Options::add(const std::string& name, double& value, const std::string&
 }
 
 Options& Options::add(const std::string& name, std::uint64_t& value, const std::string& help) {
-  return add_option({name, help, std::to_string(value), "", true, [&value, name](const std::string& t) {
-                       const long long v = parse_integer(name, t);
-                       if (v < 0) throw OptionError(name + " must not be negative, got " + t);
-                       value = static_cast<std::uint64_t>(v);
-                     }});
+  return add_option({name, help, std::to_string(value), "", true,
+                     [&value, name](const std::string& t) { value = parse_unsigned(name, t); }});
 }
 
 Options& Options::add(const std::string& name, std::string& value, const std::string& help,
@@ -98,6 +117,7 @@ Options& Options::add(const std::string& name, std::string& value, const std::st
   for (const std::string& c : choices) listed += (listed.empty() ? "" : ", ") + c;
   return add_option({name, help, value, listed.empty() ? "" : "one of: " + listed, true,
                      [&value, name, choices, listed](const std::string& t) {
+                       if (t.empty()) throw OptionError(name + " needs a value, got an empty one");
                        if (!choices.empty() && std::find(choices.begin(), choices.end(), t) == choices.end())
                          throw OptionError(name + " must be one of: " + listed + "; got '" + t + "'");
                        value = t;
@@ -154,6 +174,8 @@ bool Options::parse(int argc, const char* const* argv) {
     if (!has_value) {
       if (i + 1 >= argc) throw OptionError(arg + " needs a value");
       value = argv[++i];
+      // "--out --threads": the value was forgotten. Negative numbers ("-3") pass.
+      if (value.rfind("--", 0) == 0) throw OptionError(arg + " needs a value, got the option '" + value + "'");
     }
     option->set(value);
   }
@@ -176,11 +198,14 @@ std::string Options::help() const {
   return os.str();
 }
 
-void add_common_options(Options& options, CommonOptions& common, const std::string& lesson_name) {
+void add_common_options(Options& options, CommonOptions& common, const std::string& lesson_name, bool threads,
+                        bool seed) {
   common.out = "out/" + lesson_name;
-  options.add("--out", common.out, "folder for images, tables (CSV) and charts (SVG)")
-      .add("--threads", common.threads, "worker threads, 0 = all cores (the output is the same for any number)", 0, 256)
-      .add("--seed", common.seed, "seed of the random numbers");
+  options.add("--out", common.out, "folder for images, tables (CSV) and charts (SVG)");
+  if (threads)
+    options.add("--threads", common.threads, "worker threads, 0 = all cores (the output is the same for any number)", 0,
+                256);
+  if (seed) options.add("--seed", common.seed, "seed of the random numbers (0 to 2^64 - 1)");
 }
 
 }  // namespace gi

@@ -13,15 +13,26 @@ struct OptionError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A condition a whole number must meet besides its range, named for --help and for
+// the error: "--resolution must be even, got 33".
+struct Rule {
+  std::string name;
+  std::function<bool(long long)> holds;
+};
+inline const Rule even{"even", [](long long v) { return v % 2 == 0; }};
+
 // A lesson's command-line options: each is bound to a variable that holds its default.
-// Accepts "--name value" and "--name=value"; checks ranges and choices.
+// Accepts "--name value" and "--name=value"; checks ranges, rules and choices. A value
+// taken from the next argument may not look like an option ("--out --threads" is a
+// missing value, not a folder named --threads), and text may not be empty.
 class Options {
  public:
   Options(std::string program, std::string summary);
 
   Options& add(const std::string& name, int& value, const std::string& help, int min, int max);
+  Options& add(const std::string& name, int& value, const std::string& help, int min, int max, const Rule& rule);
   Options& add(const std::string& name, double& value, const std::string& help, double min, double max);
-  Options& add(const std::string& name, std::uint64_t& value, const std::string& help);
+  Options& add(const std::string& name, std::uint64_t& value, const std::string& help);  // [0, 2^64 - 1]
   // Empty `choices` accepts any text.
   Options& add(const std::string& name, std::string& value, const std::string& help,
                std::vector<std::string> choices = {});
@@ -48,13 +59,18 @@ class Options {
   std::vector<Option> options_;
 };
 
-// The options every lesson has: --out DIR (default out/<lesson>), --threads N (0 = all
-// cores) and --seed N.
+// The options most lessons have: --out DIR (default out/<lesson>; not empty, not
+// starting with '-'), --threads N (0 = all cores) and --seed N. A lesson offers
+// --threads and --seed only if it uses them (gi::Lesson decides).
 struct CommonOptions {
   std::string out;
   int threads = 0;
   std::uint64_t seed = 1;
 };
-void add_common_options(Options& options, CommonOptions& common, const std::string& lesson_name);
+void add_common_options(Options& options, CommonOptions& common, const std::string& lesson_name, bool threads = true,
+                        bool seed = true);
+
+// The one range of --width and --height in every lesson that renders a picture.
+constexpr int min_image_size = 16, max_image_size = 4096;
 
 }  // namespace gi

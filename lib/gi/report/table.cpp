@@ -2,9 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "gi/core/atomic_file.hpp"
 
 namespace gi {
 
@@ -94,15 +95,14 @@ std::string Table::to_string() const {
 void Table::print(std::ostream& os) const { os << to_string() << std::flush; }
 
 void Table::write_csv(const std::filesystem::path& file) const {
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot write " + file.string());
-  for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << csv_text(Cell(columns_[c].name));
-  out << '\n';
-  for (const auto& row : rows_) {
-    for (std::size_t c = 0; c < row.size(); ++c) out << (c ? "," : "") << csv_text(row[c]);
+  write_atomically(file, [&](std::ostream& out) {
+    for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << csv_text(Cell(columns_[c].name));
     out << '\n';
-  }
+    for (const auto& row : rows_) {
+      for (std::size_t c = 0; c < row.size(); ++c) out << (c ? "," : "") << csv_text(row[c]);
+      out << '\n';
+    }
+  });
 }
 
 }  // namespace gi

@@ -35,7 +35,9 @@ class Table {
   void add_row(std::vector<Cell> cells);  // throws std::invalid_argument on a wrong cell count
   void print(std::ostream& os = std::cout) const;
   std::string to_string() const;
-  void write_csv(const std::filesystem::path& file) const;  // creates parent folders
+  const std::string& title() const { return title_; }
+  // Creates parent folders; atomic (gi/core/atomic_file.hpp); throws WriteError.
+  void write_csv(const std::filesystem::path& file) const;
   std::size_t rows() const { return rows_.size(); }
 
  private:

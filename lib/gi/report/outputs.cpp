@@ -1,0 +1,78 @@
+#include "gi/report/outputs.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace gi {
+
+std::string kind_name(OutputKind kind) {
+  switch (kind) {
+    case OutputKind::Text: return "text";
+    case OutputKind::Table: return "table";
+    case OutputKind::Picture: return "picture";
+    case OutputKind::Diagram: return "diagram";
+    case OutputKind::Chart: return "chart";
+    case OutputKind::Mesh: return "mesh";
+    case OutputKind::Cache: return "cache";
+  }
+  return "?";
+}
+
+namespace {
+
+// A JSON string: quotes, backslashes and control characters escaped.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (unsigned char c : text) {
+    if (c == '"' || c == '\\') out += '\\', out += static_cast<char>(c);
+    else if (c == '\n') out += "\\n";
+    else if (c < 0x20) {
+      char code[8];
+      std::snprintf(code, sizeof code, "\\u%04x", c);
+      out += code;
+    } else out += static_cast<char>(c);
+  }
+  return out + "\"";
+}
+
+// Shortest text that reads back as the same double (JSON has no NaN: null).
+std::string number(double v) {
+  if (!std::isfinite(v)) return "null";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v);
+  return buffer;
+}
+
+std::string vector_text(const vec3& v) { return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]"; }
+
+std::string view_json(const View& view) {
+  return "{\"eye\": " + vector_text(view.camera.eye) + ", \"look_at\": " + vector_text(view.camera.look_at) +
+         ", \"up\": " + vector_text(view.camera.up) + ", \"vertical_fov_degrees\": " +
+         number(view.camera.vertical_fov) + ", \"width\": " + std::to_string(view.width) +
+         ", \"height\": " + std::to_string(view.height) + ", \"pixel_samples\": " + quoted(view.pixel_samples) +
+         ", \"projection\": \"pinhole; pixel (x, y) spans [x, x+1] x [y, y+1] of the image plane, row 0 at the top\"}";
+}
+
+}  // namespace
+
+std::string outputs_json(const std::string& lesson, const std::vector<std::string>& command, const std::string& status,
+                         const std::vector<Output>& outputs) {
+  std::ostringstream os;
+  os << "{\n  \"lesson\": " << quoted(lesson) << ",\n  \"command\": [";
+  for (std::size_t i = 0; i < command.size(); ++i) os << (i ? ", " : "") << quoted(command[i]);
+  os << "],\n  \"status\": " << quoted(status) << ",\n  \"outputs\": [";
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const Output& o = outputs[i];
+    os << (i ? "," : "") << "\n    {\"kind\": " << quoted(kind_name(o.kind)) << ", \"caption\": " << quoted(o.caption);
+    if (!o.file.empty()) os << ", \"file\": " << quoted(o.file.generic_string()) << ", \"bytes\": " << o.bytes;
+    if (o.kind == OutputKind::Picture)
+      os << ", \"linear\": " << quoted(o.linear.generic_string()) << ", \"exposure\": " << number(o.exposure)
+         << ", \"view\": " << view_json(o.view);
+    os << "}";
+  }
+  os << "\n  ]\n}\n";
+  return os.str();
+}
+
+}  // namespace gi

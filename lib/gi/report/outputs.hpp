@@ -1,0 +1,48 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "gi/scene/camera.hpp"
+
+namespace gi {
+
+// How a picture was seen, so that an outside renderer can make the same one: the
+// pinhole camera (camera.hpp: pixel (x, y) spans [x, x + 1] x [y, y + 1] of the image
+// plane, row 0 at the top), the image size, and how each pixel was sampled.
+struct View {
+  Camera camera;
+  int width = 0, height = 0;
+  std::string pixel_samples;  // "one eye ray through the pixel centre", "4 x 4 jittered, box filter" ...
+};
+
+// What a lesson printed and wrote, in order: the record a report page is built from.
+enum class OutputKind {
+  Text,     // a line printed on stdout
+  Table,    // printed on stdout, and written as CSV
+  Picture,  // a rendered picture: PNG for the eye, PFM beside it with the linear radiance
+  Diagram,  // a PNG that is not a view of radiance: false colour, heat maps, crops
+  Chart,    // SVG
+  Mesh,     // PLY
+  Cache,    // a cached result the lesson read or made (a reference image)
+};
+std::string kind_name(OutputKind kind);  // "text", "table", "picture" ...
+
+struct Output {
+  OutputKind kind = OutputKind::Text;
+  std::string caption;          // a table's title, a picture's subject, a text line
+  std::filesystem::path file;   // relative to the output folder; empty for text
+  std::uintmax_t bytes = 0;     // as written, checked again when the lesson ends
+  std::filesystem::path linear; // Picture: the PFM beside the PNG
+  std::uintmax_t linear_bytes = 0;
+  double exposure = 1;          // Picture: the PNG shows clamp(exposure * radiance)
+  View view;                    // Picture
+};
+
+// The record as JSON (outputs.json in the lesson's folder): the lesson, its command
+// line, whether it completed (or the error that stopped it) and every output.
+std::string outputs_json(const std::string& lesson, const std::vector<std::string>& command, const std::string& status,
+                         const std::vector<Output>& outputs);
+
+}  // namespace gi
