@@ -65,40 +65,41 @@ Color block_sum(const Image& image, int bx, int by, int block, bool squares) {
   return sum;
 }
 
-// sqrt(mean over interior blocks and channels of (numerator_bc / r_bc)^2).
-template <class Numerator>
-double relative_rms_over(const Image& reference, const BlockMask& mask, const char* what, Numerator numerator) {
+// Both measures, with `difference`(bx, by) in place of t_b - r_b.
+template <class Difference>
+PictureError measure(const Image& reference, const BlockMask& mask, const char* what, Difference difference) {
   const double pixels = double(mask.block) * mask.block;
-  double sum = 0;
+  double squared = 0, reference_squared = 0, relative_squared = 0;
   int n = 0;
   for (int by = 0; by < mask.blocks_y; ++by)
     for (int bx = 0; bx < mask.blocks_x; ++bx) {
       if (!mask.interior[by * mask.blocks_x + bx]) continue;
       const Color r = block_sum(reference, bx, by, mask.block, false) / pixels;
-      const Color e = numerator(bx, by);
+      const Color e = difference(bx, by);
       for (int c = 0; c < 3; ++c) {
         if (!(r[c] > 0)) throw std::invalid_argument(std::string(what) + ": a reference block is not positive");
-        sum += (e[c] / r[c]) * (e[c] / r[c]);
+        squared += e[c] * e[c], reference_squared += r[c] * r[c];
+        relative_squared += (e[c] / r[c]) * (e[c] / r[c]);
         ++n;
       }
     }
-  return std::sqrt(sum / n);
+  return {std::sqrt(squared / reference_squared), std::sqrt(relative_squared / n)};
 }
 
 }  // namespace
 
-double block_relative_rms(const Image& test, const Image& reference, const BlockMask& mask) {
-  check_sizes(test, reference, mask, "block relative RMS");
+PictureError picture_error(const Image& test, const Image& reference, const BlockMask& mask) {
+  check_sizes(test, reference, mask, "picture error");
   const double pixels = double(mask.block) * mask.block;
-  return relative_rms_over(reference, mask, "block relative RMS", [&](int bx, int by) {
+  return measure(reference, mask, "picture error", [&](int bx, int by) {
     return (block_sum(test, bx, by, mask.block, false) - block_sum(reference, bx, by, mask.block, false)) / pixels;
   });
 }
 
-double block_relative_noise(const Image& standard_error, const Image& reference, const BlockMask& mask) {
-  check_sizes(standard_error, reference, mask, "block relative noise");
+PictureError reference_noise(const Image& standard_error, const Image& reference, const BlockMask& mask) {
+  check_sizes(standard_error, reference, mask, "reference noise");
   const double pixels = double(mask.block) * mask.block;
-  return relative_rms_over(reference, mask, "block relative noise", [&](int bx, int by) {
+  return measure(reference, mask, "reference noise", [&](int bx, int by) {
     return sqrt(block_sum(standard_error, bx, by, mask.block, true)) / pixels;
   });
 }

@@ -27,17 +27,25 @@ struct BlockMask {
 BlockMask interior_blocks(const std::vector<Surface>& surfaces, const Camera& camera, int width, int height,
                           int block);
 
-// The relative RMS error over the mask's blocks and the three channels:
-//   e = sqrt( mean over blocks b, channels c of ((t_bc - r_bc) / r_bc)^2 )
-// with t_bc, r_bc the block means of test and reference. Throws std::invalid_argument
-// for pictures of another size than the mask's, an empty mask or a reference block
-// that is not positive.
-double block_relative_rms(const Image& test, const Image& reference, const BlockMask& mask);
+// Two measures of how far a test picture is from the reference, both over the mask's
+// blocks and the three channels, with t_bc and r_bc the block means:
+//   relative RMS    e = sqrt( sum (t_bc - r_bc)^2 / sum r_bc^2 )
+//                   the picture's error in proportion to its light: a dark corner
+//                   counts for as little light as it holds
+//   block relative  e = sqrt( mean ((t_bc - r_bc) / r_bc)^2 )
+//                   every block and channel counts alike: a shadow twice too bright
+//                   weighs as much as a bright wall twice too bright
+// Both throw std::invalid_argument for pictures of another size than the mask's, an
+// empty mask or (block relative) a reference block that is not positive.
+struct PictureError {
+  double relative_rms = 0;
+  double block_relative = 0;
+};
+PictureError picture_error(const Image& test, const Image& reference, const BlockMask& mask);
 
-// The reference's own noise by the same measure, from its per-pixel standard errors:
-// a block's standard error is sqrt(sum se^2) / block^2 (independent pixels), and
-//   sqrt( mean over blocks and channels of (se_bc / r_bc)^2 ).
-// A test picture equal to the truth would still score about this.
-double block_relative_noise(const Image& standard_error, const Image& reference, const BlockMask& mask);
+// The reference's own noise by the same measures, from its per-pixel standard errors:
+// a block's standard error is sqrt(sum se^2) / block^2 (independent pixels), in place
+// of t_bc - r_bc. A test picture equal to the truth would still score about this.
+PictureError reference_noise(const Image& standard_error, const Image& reference, const BlockMask& mask);
 
 }  // namespace gi
