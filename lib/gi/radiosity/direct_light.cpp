@@ -17,21 +17,8 @@ void check(const DirectLightSettings& s) {
   if (s.threads < 0) throw std::invalid_argument("direct light: threads must be 0 (all cores) or more");
 }
 
-namespace {
-
-// A light, cut into strata: the centre, area and normal of every cell.
-struct LightCell {
-  vec3 centre;
-  double area;
-};
-struct Light {
-  Polygon shape;
-  Color exitance;  // E
-  std::vector<LightCell> cells;
-};
-
-std::vector<Light> lights_of(const Mesh& mesh, int cells) {
-  std::vector<Light> lights;
+DirectLighting::DirectLighting(const Mesh& mesh, int cells) {
+  check(DirectLightSettings{cells, 1, 0});
   for (const Surface& s : mesh.surfaces) {
     if (max_component(s.emission) <= 0) continue;
     Light light{make_polygon(s.corners), s.emission, {}};
@@ -41,16 +28,16 @@ std::vector<Light> lights_of(const Mesh& mesh, int cells) {
         const Polygon cell = make_polygon({at(0, 0), at(1, 0), at(1, 1), at(0, 1)});
         light.cells.push_back({cell.centre, cell.area});
       }
-    lights.push_back(std::move(light));
+    lights_.push_back(std::move(light));
   }
-  return lights;
 }
 
 // The visible fraction of `light` from x: each cell weighted by its differential
 // form factor cos_x cos_c A_c / (pi r^2) (the pi cancels in the ratio).
-double visible_fraction(const FormFactorScene& scene, const vec3& x, const vec3& n, const Light& light) {
+double DirectLighting::visible_fraction(const FormFactorScene& scene, const vec3& x, const vec3& n,
+                                        const Light& light) const {
   double seen = 0, all = 0;
-  for (const LightCell& c : light.cells) {
+  for (const Cell& c : light.cells) {
     const vec3 d = c.centre - x;
     const double r2 = dot(d, d);
     const double f = dot(n, d) * -dot(light.shape.normal, d) * c.area / (r2 * r2);
@@ -62,23 +49,21 @@ double visible_fraction(const FormFactorScene& scene, const vec3& x, const vec3&
 }
 
 // H(x) = sum_l E_l F(x -> l) V(x, l).
-Color irradiance(const FormFactorScene& scene, const vec3& x, const vec3& n, const std::vector<Light>& lights) {
+Color DirectLighting::irradiance(const FormFactorScene& scene, const vec3& x, const vec3& n) const {
   Color H(0.0);
-  for (const Light& light : lights) {
+  for (const Light& light : lights_) {
     const double F = form_factor_point_to_polygon(x, n, light.shape);
     if (F > 0) H += light.exitance * (F * visible_fraction(scene, x, n, light));
   }
   return H;
 }
 
-}  // namespace
-
 std::vector<Color> direct_radiosity(const FormFactorScene& scene, const Mesh& mesh,
                                     const DirectLightSettings& settings) {
   check(settings);
   if (scene.polygons().size() != mesh.elements.size())
     throw std::invalid_argument("direct light: the scene must be built from the mesh's elements");
-  const std::vector<Light> lights = lights_of(mesh, settings.light_cells);
+  const DirectLighting lights(mesh, settings.light_cells);
   const GaussRule& rule = gauss_legendre(settings.receiver_points);
   std::vector<Color> D(mesh.elements.size(), Color(0.0));
   parallel_for(static_cast<int>(mesh.elements.size()), settings.threads, [&](int i) {
@@ -101,7 +86,7 @@ std::vector<Color> direct_radiosity(const FormFactorScene& scene, const Mesh& me
         const vec3 dx_ds = (1 - t) * (c[1] - c[0]) + t * (c[2] - c[3]);
         const vec3 dx_dt = (1 - s) * (c[3] - c[0]) + s * (c[2] - c[1]);
         const double w = rule.weights[u] * rule.weights[v] * length(cross(dx_ds, dx_dt));
-        integral += w * irradiance(scene, x, p.normal, lights);
+        integral += w * lights.irradiance(scene, x, p.normal);
         area += w;
       }
     const Color mean = integral / area;

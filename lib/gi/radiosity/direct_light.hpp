@@ -31,6 +31,28 @@ struct DirectLightSettings {
 };
 void check(const DirectLightSettings& settings);  // throws std::invalid_argument
 
+// The lights of a mesh (its surfaces with emission E > 0), each cut into strata, ready
+// to give H(x) at any point: per element here, per pixel in direct_display.hpp.
+class DirectLighting {
+ public:
+  DirectLighting(const Mesh& mesh, int light_cells);  // throws std::invalid_argument outside 1..64
+  // H(x) at point x with unit normal n; `scene` casts the shadow rays.
+  Color irradiance(const FormFactorScene& scene, const vec3& x, const vec3& n) const;
+
+ private:
+  struct Cell {
+    vec3 centre;
+    double area;
+  };
+  struct Light {
+    Polygon shape;
+    Color exitance;  // E
+    std::vector<Cell> cells;
+  };
+  double visible_fraction(const FormFactorScene& scene, const vec3& x, const vec3& n, const Light& light) const;
+  std::vector<Light> lights_;
+};
+
 // D_i for every element of `mesh` (lights are the surfaces with emission E > 0).
 // `scene` must be built from element_shapes(mesh): it casts the shadow rays.
 std::vector<Color> direct_radiosity(const FormFactorScene& scene, const Mesh& mesh,

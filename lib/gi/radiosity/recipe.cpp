@@ -22,9 +22,7 @@ std::string name(RecipeSolver solver) {
 }
 
 std::string describe(const Recipe& r) {
-  std::string ff = name(r.form_factors.method);
-  if (r.form_factors.method == FormFactorMethod::Hemicube) ff += " " + std::to_string(r.form_factors.hemicube_resolution);
-  if (r.form_factors.method == FormFactorMethod::MonteCarlo) ff += " " + std::to_string(r.form_factors.rays);
+  const std::string ff = name(r.form_factors.method);
   const std::string light = r.exact_direct ? "exact direct + " + ff + " indirect" : ff + " for all light";
   return light + ", " + name(r.solver);
 }
@@ -62,12 +60,17 @@ SolverResult run_solver(const RadiositySystem& system, const Mesh& mesh, const S
 
 }  // namespace
 
-RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& r) {
+RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe) {
+  RecipeResult result;
+  result.mesh = make_mesh(surfaces, {patch_size_for(surfaces, recipe.elements, recipe.elements_per_side),
+                                     recipe.elements_per_side});
+  const Mesh& mesh = result.mesh;
+  Recipe r = recipe;
+  if (r.form_factors.method == FormFactorMethod::Hemicube && r.form_factors.hemicube_resolution == 0)
+    r.form_factors.hemicube_resolution = hemicube_resolution_for(mesh);
   check(r.form_factors);
   if (r.exact_direct) check(r.direct);
-  RecipeResult result;
-  result.mesh = make_mesh(surfaces, {patch_size_for(surfaces, r.elements, r.elements_per_side), r.elements_per_side});
-  const Mesh& mesh = result.mesh;
+  result.form_factors = r.form_factors;
   const int n = static_cast<int>(mesh.elements.size());
   const bool shooting = r.solver == RecipeSolver::Progressive;
   if (!shooting && n > 20000)
@@ -78,7 +81,11 @@ RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& r)
   result.form_factor_seconds = timer.seconds();
 
   timer.restart();
-  const RadiositySystem solved = r.exact_direct ? indirect_system(system, direct_radiosity(receivers, mesh, r.direct)) : system;
+  const std::vector<Color> E = system.emission;
+  if (r.exact_direct) {
+    result.direct = direct_radiosity(receivers, mesh, r.direct);
+    system = indirect_system(std::move(system), result.direct);  // moved, not copied: F may be 100s of MB
+  }
   result.direct_seconds = r.exact_direct ? timer.seconds() : 0;
 
   // Shooting computes a patch's row the first time it shoots and keeps it: those
@@ -93,13 +100,15 @@ RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& r)
     }
     return rows[p];
   };
-  const SolverResult solution = run_solver(solved, mesh, row, r);
+  const SolverResult solution = run_solver(system, mesh, row, r);
   // The solver's own clock leaves out the monitor's bookkeeping (residuals for the
   // history), which is not part of the method.
   result.solve_seconds = solution.history.back().seconds - row_seconds;
   result.form_factor_seconds += row_seconds;
   result.status = solution.status;
-  result.B = r.exact_direct ? with_emission(system, solution.B) : solution.B;
+  result.B = solution.B;
+  if (r.exact_direct)
+    for (int i = 0; i < n; ++i) result.B[i] += E[i];  // B = E + B_indirect
   return result;
 }
 

@@ -19,7 +19,8 @@ struct Recipe {
   int elements = 1000;       // about how many elements (patch_size_for)
   int elements_per_side = 1;  // each patch cut into n x n elements: progressive refinement shoots from
                               // patches; the matrix solvers use elements only
-  FormFactorSettings form_factors;  // the interreflection's (and, without exact_direct, all light's)
+  FormFactorSettings form_factors;  // the interreflection's (and, without exact_direct, all light's);
+                                    // hemicube_resolution 0: chosen from the mesh (hemicube_resolution_for)
   bool exact_direct = true;         // the first bounce by direct_radiosity, the rest by form_factors
   DirectLightSettings direct;
   RecipeSolver solver = RecipeSolver::GaussSeidel;
@@ -27,13 +28,16 @@ struct Recipe {
   int threads = 0;
 };
 
-// "exact direct + hemicube 120, Gauss-Seidel": what a table row calls the recipe.
+// "exact direct + hemicube indirect, Gauss-Seidel": what a table row calls the recipe
+// (the hemicube's resolution and the ray count go in a column of their own).
 std::string describe(const Recipe& recipe);
 
 struct RecipeResult {
   Mesh mesh;
   std::vector<Color> B;
+  std::vector<Color> direct;      // D, exact_direct only: B - E - D is what bounced more than once
   SolveStatus status = SolveStatus::StoppedAtLimit;
+  FormFactorSettings form_factors;  // as used: the hemicube's resolution filled in
   double form_factor_seconds = 0;  // the matrix (for progressive: the rows, as they are shot)
   double direct_seconds = 0;       // direct_radiosity (0 without exact_direct)
   double solve_seconds = 0;        // the solver, form factors excluded
