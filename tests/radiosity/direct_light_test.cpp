@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gi/radiosity/configuration_factors.hpp"
+#include "gi/radiosity/direct_display.hpp"
 #include "gi/radiosity/direct_light.hpp"
 #include "gi/radiosity/form_factor_formulas.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
@@ -125,6 +126,42 @@ TEST(DirectLight, RejectsBadSettings) {
   const gi::Mesh other = mesh_of(gi::parallel_squares(), 2);
   EXPECT_THROW(gi::direct_radiosity(scene, other, {}), std::invalid_argument);
   EXPECT_THROW(gi::indirect_system(gi::make_system(mesh, {}), {}), std::invalid_argument);
+}
+
+}  // namespace
+
+namespace {
+
+// The direct light drawn per pixel (direct_display.hpp): looking up at the top of the
+// parallel squares from between them, each pixel shows rho E F(x -> light) / pi at the
+// point it sees, F by the contour integral (nothing blocks). A pixel's eye ray lands
+// anywhere in it: 1e-3 relative covers F's change across one of 63 x 63 pixels.
+TEST(DirectDisplay, EachPixelShowsItsPointsDirectLight) {
+  const gi::RadiosityScene scene = gi::parallel_squares();
+  const gi::Mesh mesh = mesh_of(scene, 2);
+  const gi::FormFactorScene elements(gi::element_shapes(mesh));
+  gi::DisplaySettings display;
+  display.width = display.height = 63;
+  display.samples = 1;
+  const gi::Camera camera{{0, 0.5, 0}, {0, 1, 0}, {0, 0, 1}, 30};
+  const gi::Image picture = gi::render_direct_light(elements, mesh, camera, display, {8, 1, 0});
+  const gi::CameraFrame frame = gi::camera_frame(camera, 63, 63);
+  const gi::Polygon light = gi::make_polygon(scene.surfaces[0].corners);
+  for (int y = 0; y < 63; y += 31)
+    for (int x = 0; x < 63; x += 31) {
+      const gi::Ray ray = gi::primary_ray(frame, x + 0.5, y + 0.5);
+      const gi::vec3 point = ray.at((1.0 - 0.5) / ray.direction.y);
+      const double expected = 0.5 * gi::form_factor_point_to_polygon(point, {0, -1, 0}, light) / gi::pi;
+      EXPECT_NEAR(picture.at(x, y).x, expected, 1e-3 * expected) << x << ", " << y;
+    }
+  // What bounced more than once: B - E - D, zero where B is only E + D.
+  const std::vector<Color> D = direct(mesh, 8, 2), B = [&] {
+    std::vector<Color> b = D;
+    for (std::size_t i = 0; i < b.size(); ++i) b[i] += mesh.emission(mesh.elements[i]);
+    return b;
+  }();
+  for (const Color& c : gi::indirect_part(mesh, B, D)) EXPECT_EQ(c, Color(0.0));
+  EXPECT_THROW(gi::indirect_part(mesh, B, {}), std::invalid_argument);
 }
 
 }  // namespace
