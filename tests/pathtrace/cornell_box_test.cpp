@@ -12,14 +12,16 @@ using gi::vec3;
 
 namespace {
 
-// The published data as radiosity had it before the move (lib/gi/radiosity/cornell_box.cpp
-// at c8cac31), typed out again: corners, reflectance and exitance of each surface.
+// The published geometry as radiosity had it before the move (lib/gi/radiosity/cornell_box.cpp
+// at c8cac31), typed out again: corners of each surface. The colours are the palette's
+// (tests/scene/cornell_palette_test.cpp checks them against the published spectra).
 struct Published {
   const char* name;
   std::array<vec3, 4> corners;
   gi::Color rho, e;
 };
-const gi::Color white(0.725, 0.71, 0.68), red(0.63, 0.065, 0.05), green(0.14, 0.45, 0.091), none(0.0);
+const gi::CornellPalette palette = gi::cornell_palette();
+const gi::Color white = palette.white, red = palette.red, green = palette.green, none(0.0);
 const double y = 548.8;
 const Published published[] = {
     {"floor", {{{552.8, 0, 0}, {0, 0, 0}, {0, 0, 559.2}, {549.6, 0, 559.2}}}, white, none},
@@ -32,8 +34,8 @@ const Published published[] = {
     {"ceiling green side", {{{213, y, 227}, {213, y, 332}, {0, y, 332}, {0, y, 227}}}, white, none},
     {"light",
      {{{343, y, 227}, {343, y, 332}, {213, y, 332}, {213, y, 227}}},
-     gi::Color(0.78),
-     gi::pi* gi::Color(17, 12, 4)},
+     palette.light_reflectance,
+     palette.light_exitance},
     {"short block top", {{{130, 165, 65}, {82, 165, 225}, {240, 165, 272}, {290, 165, 114}}}, white, none},
     {"short block 1", {{{290, 0, 114}, {290, 165, 114}, {240, 165, 272}, {240, 0, 272}}}, white, none},
     {"short block 2", {{{130, 0, 65}, {130, 165, 65}, {290, 165, 114}, {290, 0, 114}}}, white, none},

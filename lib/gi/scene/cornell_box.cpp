@@ -2,24 +2,30 @@
 
 #include <cmath>
 
+#include "gi/scene/cornell_spectra.hpp"
+
 namespace gi {
 
-CornellPalette cornell_palette() {
-  // The RGB set of Morgan McGuire's Computer Graphics Archive version of the box, which
-  // many renderers share; the light's radiance is 17 12 4, so its exitance E = pi L.
+CornellPalette cornell_palette(const CornellPaletteChoice& choice) {
   CornellPalette p;
-  p.white = Color(0.725, 0.71, 0.68);
-  p.red = Color(0.63, 0.065, 0.05);
-  p.green = Color(0.14, 0.45, 0.091);
-  p.light_reflectance = Color(0.78);
-  p.light_exitance = pi * Color(17, 12, 4);
+  if (choice.reflectances == CornellReflectances::Published) {
+    p.white = rgb_band_means(cornell_white_spectrum());
+    p.red = rgb_band_means(cornell_red_spectrum());
+    p.green = rgb_band_means(cornell_green_spectrum());
+  } else {
+    p.white = Color(0.725, 0.71, 0.68);
+    p.red = Color(0.63, 0.065, 0.05);
+    p.green = Color(0.14, 0.45, 0.091);
+  }
+  // A Lambertian emitter of radiance L has exitance E = pi L.
+  p.light_exitance = choice.light == CornellLight::Published ? pi * rgb_band_means(cornell_light_spectrum()) : Color(1.0);
+  p.light_reflectance = Color(choice.light_reflects ? 0.78 : 0.0);
   p.mirror = Color(0.95);
   p.glass_ior = 1.5;
   return p;
 }
 
-CornellBox cornell_box_data(CornellContents contents, bool closed) {
-  const CornellPalette p = cornell_palette();
+CornellBox cornell_box_data(CornellContents contents, bool closed, const CornellPalette& p) {
   const Color &white = p.white, &red = p.red, &green = p.green;
   CornellBox box;
   auto add = [&](const std::string& name, std::array<vec3, 4> corners, Color rho, Color e = Color(0.0)) {
@@ -58,7 +64,7 @@ CornellBox cornell_box_data(CornellContents contents, bool closed) {
   return box;
 }
 
-Scene cornell_box_scene(const CornellBox& box) {
+Scene cornell_box_scene(const CornellBox& box, const CornellPalette& p) {
   Scene s;
   s.name = box.spheres.empty() ? "cornell" : "cornell-spheres";
   for (const QuadSurface& q : box.surfaces) {
@@ -71,7 +77,6 @@ Scene cornell_box_scene(const CornellBox& box) {
     s.add(Triangle{c[0], c[1], c[2], material});
     s.add(Triangle{c[0], c[2], c[3], material});
   }
-  const CornellPalette p = cornell_palette();
   for (const CornellSphere& sphere : box.spheres) {
     Material m;
     m.name = sphere.name;

@@ -33,8 +33,7 @@ struct QuadSurface {
 };
 
 // Every reflectance and the light's emission, in this one place: the surfaces below
-// take theirs from here, so a different set (e.g. band means of the published
-// spectra) is a change to cornell_palette() alone.
+// take theirs from here, so radiosity and the path tracer always see the same box.
 struct CornellPalette {
   Color white, red, green;
   Color light_reflectance;  // the light's own surface
@@ -42,7 +41,29 @@ struct CornellPalette {
   Color mirror;             // the mirror sphere's reflectance (the spheres variant)
   double glass_ior;         // the glass sphere's index of refraction
 };
-CornellPalette cornell_palette();
+
+// Which published numbers the palette takes (cornell_spectra.hpp for the data):
+//  - Published (the default): the band means of the measured spectra over
+//    R = [600, 700], G = [500, 600], B = [400, 500] nm: white (0.734, 0.736, 0.706),
+//    red (0.581, 0.088, 0.057), green (0.132, 0.348, 0.117);
+//  - McGuire: the RGB set of Morgan McGuire's Computer Graphics Archive box, which
+//    many renderers share: white (0.725, 0.71, 0.68), red (0.63, 0.065, 0.05),
+//    green (0.14, 0.45, 0.091).
+enum class CornellReflectances { Published, McGuire };
+//  - Published (the default): the light's emission spectrum's band means taken as
+//    radiance, L = (17.0, 11.8, 4.0), E = pi L (McGuire's light is these rounded);
+//  - WhiteUnitExitance: E = 1 in every channel, for tests with round numbers.
+enum class CornellLight { Published, WhiteUnitExitance };
+
+struct CornellPaletteChoice {
+  CornellReflectances reflectances = CornellReflectances::Published;
+  CornellLight light = CornellLight::Published;
+  // The data gives the light's surface a reflectance of 0.78; most renderings of the
+  // box (and ours by default) make it black. With it on, the light also reflects the
+  // light that falls on it back from the floor: the box is slightly brighter.
+  bool light_reflects = false;
+};
+CornellPalette cornell_palette(const CornellPaletteChoice& choice = {});
 
 // What stands on the floor: the two blocks of the data, or (for the lessons that
 // need specular surfaces) a mirror sphere at the back left and a glass sphere at the
@@ -61,13 +82,14 @@ struct CornellBox {
   std::vector<CornellSphere> spheres;  // CornellContents::Spheres only
   Camera camera;
 };
-CornellBox cornell_box_data(CornellContents contents = CornellContents::Blocks, bool closed = false);
+CornellBox cornell_box_data(CornellContents contents = CornellContents::Blocks, bool closed = false,
+                            const CornellPalette& palette = cornell_palette());
 
 // The same box as a Scene of triangles, for the ray tracers: each quadrilateral with
 // corners c0..c3 is the triangles (c0, c1, c2) and (c0, c2, c3), the split radiosity
 // casts its rays into (form_factors.hpp). Materials: Lambertian reflectance
 // `diffuse` = rho, emission = radiance L = E / pi (only the light), black background;
 // the spheres' materials are `mirror` and `transmission` with `ior`.
-Scene cornell_box_scene(const CornellBox& box);
+Scene cornell_box_scene(const CornellBox& box, const CornellPalette& palette = cornell_palette());
 
 }  // namespace gi
