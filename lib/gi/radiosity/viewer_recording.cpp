@@ -62,7 +62,7 @@ ViewerRun record_progressive(const RadiositySystem& system, const Mesh& mesh, co
   std::vector<Color> before = system.emission;  // the unshot radiosity before this step's shot
   options.record_every = 1;
   options.observer = [&](const SolverStep& step, const std::vector<Color>& B, const std::vector<Color>& unshot) {
-    const int shooter = next_shooter(mesh, system.area, before);
+    const int shooter = choose_shooter(mesh.patches, system.area, before);
     before = unshot;
     if (kept(steps, step.step) && all_finite(B))
       run.frames.push_back({step.step, B, shooter, ambient_term(system.area, system.rho, unshot)});

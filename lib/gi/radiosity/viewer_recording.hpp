@@ -31,7 +31,7 @@ ViewerRun record_run(const Solve& solve, SolverOptions options, const std::vecto
                      double work_per_step, const std::vector<Color>& start);
 
 // Progressive refinement's run: every frame also names the patch that shot in its
-// step (next_shooter of the unshot radiosity before it) and the ambient term after
+// step (choose_shooter of the unshot radiosity before it) and the ambient term after
 // it. Frame 0 is B = E, before the first shot.
 ViewerRun record_progressive(const RadiositySystem& system, const Mesh& mesh, const ShooterRow& row,
                              SolverOptions options, const std::vector<int>& steps);
