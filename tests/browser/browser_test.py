@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The lessons' pages in a real browser (headless Chromium, SwiftShader's WebGL2).
 
-Runs lessons 08, 09 and 11 small into a scratch folder, then checks that
+Runs lessons 08 to 12 small into a scratch folder, then checks that
   - every report page (index.html) and out/index.html load with no console error,
     show all their images, and out/index.html links each lesson;
   - each viewer loads with no console error and draws; moving the step slider (a
@@ -33,6 +33,8 @@ LESSONS = {
     "09_jacobi_gauss_seidel": ["--elements", "60", "--resolution", "20", "--iterations", "20"],
     "11_progressive": ["--patches", "60", "--resolution", "20", "--width", "16", "--height", "16",
                        "--speed-elements", "100"],
+    "10_southwell": ["--elements", "60", "--resolution", "20", "--sweeps", "10"],
+    "12_solver_showdown": ["--elements", "20", "--bandwidth-n", "100", "--skip-mesh-study"],
 }
 SHOT_FRAME = 12  # the frame of lesson 11's replay the reference shows
 
@@ -137,16 +139,19 @@ def relighting_viewer(browser, out):
     no_errors(page, "08's viewer")
 
 
-def curves_viewer(browser, out):
-    page = open_viewer(browser, out, "09_jacobi_gauss_seidel")
-    check(page.evaluate("document.getElementById('view-labels').children.length") == 3,
-          "09's viewer: Jacobi, Gauss-Seidel and SOR are not side by side")
+def curves_viewer(browser, out, lesson, drawn):
+    """A viewer of solvers side by side: `drawn` meshes, and the chart reads every
+    curve's value under the pointer."""
+    page = open_viewer(browser, out, lesson)
+    check(page.evaluate("document.getElementById('view-labels').children.length") == drawn,
+          f"{lesson}'s viewer: not {drawn} meshes side by side")
     x, y, w, h = page.box("#curves")
     page.hover(x + w / 2, y + h / 2)
     readout = page.evaluate("document.getElementById('readout').textContent")
-    check(all(name in readout for name in ("Jacobi", "Gauss-Seidel", "SOR")) and "(at " in readout,
-          f"09's viewer: the pointer over the chart reads '{readout}'")
-    no_errors(page, "09's viewer")
+    names = page.evaluate("GI_VIEWER_DATA.runs.map((r) => r.name)")
+    check(names and all(name in readout for name in names) and "(at " in readout,
+          f"{lesson}'s viewer: the pointer over the chart reads '{readout}', not every one of {names}")
+    no_errors(page, f"{lesson}'s viewer")
 
 
 def main():
@@ -173,7 +178,9 @@ def main():
             report_pages(browser, out)
             progressive_viewer(browser, out, update)
             relighting_viewer(browser, out)
-            curves_viewer(browser, out)
+            curves_viewer(browser, out, "09_jacobi_gauss_seidel", 3)  # Jacobi, Gauss-Seidel, SOR
+            curves_viewer(browser, out, "10_southwell", 3)  # Southwell, Jacobi, Gauss-Seidel
+            curves_viewer(browser, out, "12_solver_showdown", 1)  # no replay: one final solution
         except ProtocolError as e:
             problems.append(f"the browser: {e}")
         finally:
