@@ -266,3 +266,14 @@ TEST(ViewerData, PerLightSolutionsAddUp) {
   EXPECT_LT(worst, 1e-8 * largest);
   EXPECT_THROW(gi::solve_per_light(c.system, c.mesh, {"no such surface"}), std::invalid_argument);
 }
+
+// Lesson 08 names the Cornell box's block tops as lamps; another scene (--scene) has
+// no such surfaces, and its viewer shows its own lights only.
+TEST(ViewerData, LampsTheSceneLacksAreLeftOut) {
+  const Cornell& c = cornell();
+  const gi::ViewerData d = gi::neumann_and_relighting("08", c.scene, c.mesh, c.system, 3, 1.5,
+                                                      {"short block top", "a lamp elsewhere"});
+  ASSERT_EQ(d.lights.size(), 2u);
+  EXPECT_EQ(d.lights[1].name, "short block top as a lamp");
+  EXPECT_EQ(d.runs.at(0).frames.size(), 4u) << "B = E and three terms";
+}

@@ -36,7 +36,13 @@ ViewerData neumann_and_relighting(const std::string& lesson, const RadiosityScen
                              options, "term", 1, system.emission);
   series.name = "Neumann series (Jacobi from B = E)";
   data.runs.push_back(std::move(series));
-  data.lights = solve_per_light(system, mesh, lamps);
+  std::vector<std::string> present;
+  const bool lit = std::any_of(mesh.surfaces.begin(), mesh.surfaces.end(),
+                               [](const Surface& s) { return max_component(s.emission) > 0; });
+  for (const std::string& lamp : lamps)
+    if (lit && std::any_of(mesh.surfaces.begin(), mesh.surfaces.end(), [&](const Surface& s) { return s.name == lamp; }))
+      present.push_back(lamp);
+  data.lights = solve_per_light(system, mesh, present);
   return data;
 }
 

@@ -16,8 +16,10 @@ namespace gi {
 constexpr std::size_t frame_bytes = 4 << 20;
 
 // Lesson 08: the Neumann series term by term -- Jacobi from B = E, whose step k is
-// E + RFE + ... + (RF)^k E -- and relighting: the scene's light and `lamps`, each
-// solved alone (solve_per_light).
+// E + RFE + ... + (RF)^k E -- and relighting: the scene's lights and `lamps`, each
+// solved alone (solve_per_light). Lamps the scene has no surface for are left out,
+// and all of them when nothing emits: the lesson names the Cornell box's surfaces,
+// and --scene may give it another scene.
 ViewerData neumann_and_relighting(const std::string& lesson, const RadiosityScene& scene, const Mesh& mesh,
                                   const RadiositySystem& system, int terms, double exposure,
                                   const std::vector<std::string>& lamps);
