@@ -22,6 +22,7 @@
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/viewer_demos.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"
@@ -98,6 +99,11 @@ void showdown(const Box& box, gi::Lesson& lesson) {
   lesson.chart({"All solvers: error against work", "sweeps of work (n^2 multiply-adds)", "RMS error / RMS B", false,
                 true, by_work},
                "error_vs_work");
+  lesson.viewer("every solver's error curve, values under the pointer", [&](const std::filesystem::path& file) {
+    gi::write_viewer_data(gi::finished_runs(lesson.name(), "All solvers on the Cornell box", gi::cornell_box(),
+                                            box.mesh, results),
+                          file);
+  });
 }
 
 // 2. Where solvers crawl or fail, and the spectral radius of RF that says how fast
