@@ -157,7 +157,7 @@ def curves_viewer(browser, out, lesson, drawn):
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
-    bin_dir, work = Path(sys.argv[1]), Path(sys.argv[2])
+    bin_dir, work = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()  # file:// needs absolute paths
     update = "--update" in sys.argv[3:]
     chromium = shutil.which("chromium") or shutil.which("chromium-browser")
     if not chromium:
