@@ -196,6 +196,29 @@ TEST(Lessons, SolverShowdownDetectsDivergence) {
     EXPECT_TRUE(fs::exists(out_dir("12") + "/" + file)) << file;
 }
 
+// The bench's one line carries an error against the path-traced truth that falls as the
+// direct light moves from the mesh to the pixels (about 20% and 6% at 150 elements: a
+// shadow edge crosses the coarse elements), and refuses a bad recipe in one line.
+TEST(Lessons, CornellBenchScoresARecipeAgainstTheTruth) {
+  const auto error_of = [](const std::string& output) {
+    const std::size_t at = output.find("relative RMS ");
+    return at == std::string::npos ? -1.0 : std::stod(output.substr(at + 13));
+  };
+  const LessonRun mesh = run("12_cornell_bench", "--elements 100 --direct exact --out " + out_dir("12_bench"));
+  ASSERT_EQ(mesh.status, 0) << mesh.output;
+  const LessonRun pixels =
+      run("12_cornell_bench", "--elements 100 --ff monte-carlo --rays 64 --light-cells 1 --out " + out_dir("12_bench"));
+  ASSERT_EQ(pixels.status, 0) << pixels.output;
+  EXPECT_GT(error_of(mesh.output), 12) << mesh.output;
+  EXPECT_LT(error_of(mesh.output), 30) << mesh.output;
+  EXPECT_GT(error_of(pixels.output), 2) << pixels.output;
+  EXPECT_LT(error_of(pixels.output), 10) << pixels.output;
+  EXPECT_TRUE(fs::exists(out_dir("12_bench") + "/cornell.pfm"));
+  const LessonRun bad = run("12_cornell_bench", "--direct sometimes");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
+}
+
 TEST(Lessons, SameBytesForAnyThreadCount) {
   for (const char* threads : {"1", "2", "5"}) {
     const LessonRun r = run("02_recursive", std::string("--scene s10 --depth 8 --width 120 --height 90 --repeat 1 --threads ") +
