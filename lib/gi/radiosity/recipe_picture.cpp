@@ -1,0 +1,26 @@
+#include "gi/radiosity/recipe_picture.hpp"
+
+#include <stdexcept>
+
+#include "gi/radiosity/direct_display.hpp"
+
+namespace gi {
+
+Image recipe_picture(const RecipeResult& result, const Camera& camera, const DisplaySettings& display,
+                     bool direct_per_pixel, const DirectLightSettings& direct) {
+  const FormFactorScene elements(element_shapes(result.mesh));
+  if (!direct_per_pixel) return render_radiosity_picture(elements, result.mesh, result.B, camera, display).radiance;
+  if (result.direct.size() != result.B.size())
+    throw std::invalid_argument("recipe picture: the direct light per pixel needs a recipe solved with exact_direct");
+  // L = (E + rho H(x)) / pi per eye ray, plus (B - E - D) / pi from the mesh: the same
+  // eye rays in both (same settings and seed), so the sum is the picture of the sum.
+  Image picture = render_direct_light(elements, result.mesh, camera, display, direct);
+  const Image rest =
+      render_radiosity_picture(elements, result.mesh, indirect_part(result.mesh, result.B, result.direct), camera,
+                               display)
+          .radiance;
+  for (std::size_t i = 0; i < picture.pixels.size(); ++i) picture.pixels[i] += rest.pixels[i];
+  return picture;
+}
+
+}  // namespace gi
