@@ -102,10 +102,3 @@ TEST(Ex15_1_MonteCarloVariance, UnbiasedOnSimulatedPictures) {
       << ": each v_k = N_k (e_k^2 - r^2) is unbiased, and so is their plain mean; anything else (e instead of e^2, "
          "r^2 left in, negative v_k dropped) is not";
 }
-
-TEST(Ex15_1_MonteCarloVariance, RefusesMeaninglessInput) {
-  EXPECT_THROW(gi::monte_carlo_variance({}, 0), std::invalid_argument) << "no points: nothing to fit";
-  EXPECT_THROW(gi::monte_carlo_variance({{0.5, 0.1}}, 0), std::invalid_argument) << "fewer than 1 sample per pixel";
-  EXPECT_THROW(gi::monte_carlo_variance({{4, -0.1}}, 0), std::invalid_argument) << "an error is never negative";
-  EXPECT_THROW(gi::monte_carlo_variance({{4, NAN}}, 0), std::invalid_argument) << "a NaN error";
-}

@@ -23,8 +23,19 @@ TEST(MonteCarloErrorLaw, FitAndPredictionInvertEachOther) {
   EXPECT_NEAR(v, 0.02, 1e-12);
   EXPECT_NEAR(*gi::samples_for_error(v, std::sqrt(0.02 / 500 + 1e-6), 1e-3), 500, 1e-6);
   EXPECT_FALSE(gi::samples_for_error(v, 1e-3, 1e-3));
+}
+
+TEST(MonteCarloErrorLaw, RefusesMeaninglessInput) {
+  EXPECT_THROW(gi::monte_carlo_variance({}, 0), std::invalid_argument);
+  EXPECT_THROW(gi::monte_carlo_variance({{0.5, 0.1}}, 0), std::invalid_argument);
+  EXPECT_THROW(gi::monte_carlo_variance({{4, -0.1}}, 0), std::invalid_argument);
+  EXPECT_THROW(gi::monte_carlo_variance({{4, NAN}}, 0), std::invalid_argument);
   EXPECT_THROW(gi::monte_carlo_variance({{1, INFINITY}}, 0), std::invalid_argument);
+  EXPECT_THROW(gi::monte_carlo_variance({{1, 0.1}}, -1e-3), std::invalid_argument);
+  EXPECT_THROW(gi::samples_for_error(-1, 0.1, 0), std::invalid_argument);
   EXPECT_THROW(gi::samples_for_error(INFINITY, 0.1, 0), std::invalid_argument);
+  EXPECT_THROW(gi::samples_for_error(0.03, NAN, 0), std::invalid_argument);
+  EXPECT_THROW(gi::samples_for_error(0.03, 0.1, -0.01), std::invalid_argument);
 }
 
 TEST(MonteCarloErrorLaw, HoldsForThePathTracerOnTheCornellBox) {
