@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "gi/core/not_implemented.hpp"
+
 namespace gi {
 
 namespace {
