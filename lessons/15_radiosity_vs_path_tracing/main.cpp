@@ -293,7 +293,8 @@ int main(int argc, char** argv) {
   lesson.options()
       .add("--size", s.size, "picture width and height: 64, 128 or 256 (the stored truth's, averaged down)", 64, 256)
       .add("--max-spp", s.max_spp, "path tracing's last picture: 1, 2, 4, ... samples per pixel up to it", 2, 1 << 16)
-      .add("--caustic-spp", s.caustic_spp, "samples per pixel of the mirror-and-glass box's last picture", 16, 1 << 16)
+      .add("--caustic-spp", s.caustic_spp, "samples per pixel of the mirror-and-glass box's last picture (its "
+                                            "first has 1/16 of them, at least 2: a spread needs two)", 32, 1 << 16)
       .add_flag("--full", s.full, "every mesh of the chart, up to 8 100 elements (minutes)")
       .add("--reference", s.reference, "the Cornell box's converged picture (files STEM.txt, STEM.pfm, ...)");
   const gi::RadiosityScene box = gi::cornell_box();

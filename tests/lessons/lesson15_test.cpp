@@ -21,7 +21,7 @@ const char* const lesson = "15_radiosity_vs_path_tracing";
 
 TEST(Lesson15, WritesEveryPictureAndTheSameBytesForAnyThreadCount) {
   for (const char* threads : {"1", "3"}) {
-    const LessonRun r = run(lesson, std::string("--size 64 --max-spp 4 --caustic-spp 16 --threads ") + threads +
+    const LessonRun r = run(lesson, std::string("--size 64 --max-spp 4 --caustic-spp 32 --threads ") + threads +
                                         " --out " + out_dir(std::string("15_threads") + threads));
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("path tracing's error law"), std::string::npos) << r.output;
