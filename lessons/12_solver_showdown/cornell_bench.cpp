@@ -12,10 +12,10 @@
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/direct_display.hpp"
 #include "gi/radiosity/picture_error.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
+#include "gi/radiosity/recipe_picture.hpp"
 #include "gi/report/lesson.hpp"
 
 int main(int argc, char** argv) {
@@ -53,11 +53,7 @@ int main(int argc, char** argv) {
     display.width = display.height = size;
     display.threads = lesson.threads();
     display.seed = lesson.seed();
-    const gi::FormFactorScene elements(gi::element_shapes(r.mesh));
-    const gi::Image picture =
-        direct == "per-pixel"
-            ? gi::render_split_picture(elements, r.mesh, r.B, r.direct, scene.camera, display, recipe.direct)
-            : gi::render_radiosity_picture(elements, r.mesh, r.B, scene.camera, display).radiance;
+    const gi::Image picture = gi::recipe_picture(r, scene.camera, display, direct == "per-pixel", recipe.direct);
     const double seconds = timer.seconds();
 
     const gi::PictureError error = gi::picture_error(picture, truth->mean, mask);
