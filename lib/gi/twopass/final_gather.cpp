@@ -1,5 +1,6 @@
 #include "gi/twopass/final_gather.hpp"
 
+#include "gi/core/not_implemented.hpp"
 #include "gi/core/onb.hpp"
 #include "gi/core/sampling.hpp"
 

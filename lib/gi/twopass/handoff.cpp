@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "gi/core/not_implemented.hpp"
 #include "gi/radiosity/vertex_colours.hpp"
 
 namespace gi {
