@@ -4,9 +4,9 @@
 
 #include "gi/core/parallel.hpp"
 #include "gi/core/rng.hpp"
-#include "gi/raytrace/optics.hpp"
 #include "gi/twopass/final_gather.hpp"
 #include "gi/twopass/shadow_rays.hpp"
+#include "gi/twopass/specular.hpp"
 
 namespace gi {
 
@@ -54,9 +54,8 @@ struct EyePass {
   Color radiance(const Ray& ray, int depth, Rng& rng) const {
     const auto hit = first_hit(eye, ray);
     if (!hit) return Color(0.0);
-    const vec3& d = ray.direction;
     if (hit->element < 0) return specular(ray, *hit, depth, rng);
-    if (dot(d, hit->hit.normal) >= 0) return Color(0.0);  // the back of a surface
+    if (dot(ray.direction, hit->hit.normal) >= 0) return Color(0.0);  // the back of a surface
     const Element& e = handoff.mesh.elements[hit->element];
     const Color rho = handoff.mesh.reflectance(e), E = handoff.mesh.emission(e);
     const vec3& n = e.shape.normal;
@@ -72,25 +71,13 @@ struct EyePass {
     return L;
   }
 
-  // Whitted's mirror and glass (lesson 02), without the Phong terms: the spheres are
-  // perfectly specular, as the path tracer's are.
+  // Mirror and glass: the light of the one or two rays they send on (specular.hpp).
   Color specular(const Ray& ray, const EyeHit& hit, int depth, Rng& rng) const {
     if (depth >= settings.max_depth) return Color(0.0);
-    const Material& m = eye.world.scene.materials[hit.hit.material];
-    const vec3& d = ray.direction;
-    const bool entering = dot(d, hit.hit.normal) < 0;
-    const vec3 n = entering ? hit.hit.normal : -hit.hit.normal;  // on the side d comes from
-    const double eps = 1e-6 * hit.hit.t + 1e-9;
-    const auto next = [&](const vec3& origin_side, const vec3& w) {
-      return radiance(Ray{hit.hit.point + eps * origin_side, w}, depth + 1, rng);
-    };
-    if (!m.is_dielectric()) return m.mirror * next(n, reflect(d, n));
-    const double eta_i = entering ? 1.0 : m.ior, eta_t = entering ? m.ior : 1.0;
-    const double F = fresnel_dielectric(-dot(d, n), eta_i, eta_t);
-    const auto t = refract(d, n, eta_i / eta_t);
-    Color L = F * next(n, reflect(d, n));
-    if (t && F < 1) L += (1 - F) * next(-n, *t);
-    return m.transmission * L;
+    const SpecularRays next = specular_rays(eye.world.scene.materials[hit.hit.material], ray, hit.hit);
+    Color L(0.0);
+    for (int i = 0; i < next.count; ++i) L += next.rays[i].weight * radiance(next.rays[i].ray, depth + 1, rng);
+    return L;
   }
 };
 
