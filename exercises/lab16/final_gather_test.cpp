@@ -53,7 +53,7 @@ TEST(Ex16_2_FinalGather, AUniformRoomGivesItsRadiosity) {
   // is 2 whatever the directions, H = integral of (2 / pi) cos dw = 2.
   const gi::RadiosityHandoff h = lab16::room_handoff(
       lab16::room_mesh(), [](int s, const vec3&) { return constant(s == 0 ? 5 : 2); },
-      [](int, const vec3&) { return constant(0.5); }, [](int s, const vec3&) { return constant(s == 0 ? 3 : 0); });
+      [](int, const vec3&) { return constant(0); }, [](int s, const vec3&) { return constant(s == 0 ? 3 : 0); });
   const gi::EyeWorld eye = gi::make_eye_world(h.mesh, {});
   gi::Rng rng(7, 16);
   const Color H = gi::final_gather(eye, h, floor_centre, up, 4, rng);
