@@ -81,14 +81,32 @@ TEST(Ex16_2_FinalGather, EmissionIsTheShadowRaysJob) {
 }
 
 TEST(Ex16_2_FinalGather, ReadsWhereTheRayLands) {
-  // The ceiling is brighter towards x = 1: B - E = 4 x. By symmetry about x = 0.5 the
-  // irradiance at the floor's centre is 2 F (the mean of 4x over the ceiling, weighted
-  // symmetrically), but only if each ray reads the ceiling where it lands.
-  const double F = form_factor_to_ceiling();
-  const Estimate e = gather(ceiling_only([](const vec3& c) { return 4 * c.x; }), 8);
-  EXPECT_NEAR(e.mean, 2 * F, 5 * e.standard_error + 1e-3)
-      << "B - E = 4x on the ceiling gives H = 2 F = " << 2 * F << " at the floor's centre: read the mesh at the "
-         "point y the gather ray hits (its element, y), not at x, where the ray started";
+  // The ceiling is brighter towards x = 1 (B - E = 4 x at element centres, blended
+  // between them), and x is off-centre, under the dim side. The expected irradiance is
+  // the integral of (B - E)(y) cos cos / (pi r^2) over the ceiling, by a 200 x 200
+  // midpoint rule that reads the mesh through your reflected_radiosity_at (16.1).
+  const gi::RadiosityHandoff h = ceiling_only([](const vec3& c) { return 4 * c.x; });
+  const vec3 x(0.2, 1e-9, 0.5);
+  double expected = 0;
+  const int m = 200;
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) {
+      const vec3 y((i + 0.5) / m, 1.0, (j + 0.5) / m), d = y - x;
+      int element = -1;
+      for (int e = 0; e < static_cast<int>(h.mesh.elements.size()); ++e) {
+        const auto& c = h.mesh.elements[e].shape;
+        if (h.mesh.elements[e].surface != 1) continue;
+        const vec3 lo = glm::min(glm::min(c.corners[0], c.corners[1]), glm::min(c.corners[2], c.corners[3]));
+        const vec3 hi = glm::max(glm::max(c.corners[0], c.corners[1]), glm::max(c.corners[2], c.corners[3]));
+        if (y.x >= lo.x && y.x <= hi.x && y.z >= lo.z && y.z <= hi.z) element = e;
+      }
+      const double r2 = gi::dot(d, d), cos2 = d.y * d.y / r2;  // cos at x times cos at y
+      expected += gi::reflected_radiosity_at(h, element, y).x * cos2 / (gi::pi * r2) / (m * m);
+    }
+  const Estimate e = gather(h, 8, x);
+  EXPECT_NEAR(e.mean, expected, 5 * e.standard_error + 1e-3)
+      << "with B - E growing across the ceiling, the irradiance under its dim side is " << expected
+      << ": read the mesh at the point y the gather ray hits (its element, y), not at x, where the ray started";
 }
 
 TEST(Ex16_2_FinalGather, RaysThatLeaveCountAsDark) {

@@ -20,7 +20,7 @@ namespace gi {
 //    from what the eye sees first hand.
 //  - B = E + B'.
 struct RadiosityPassSettings {
-  int elements = 1500;        // about how many (patch_size_for), one element per patch
+  int elements = 1000;        // about how many (patch_size_for), one element per patch
   int light_cells = 4;        // D: cells^2 shadow rays per light and point
   int receiver_strata = 2;    // D: strata^2 jittered points per element
   FormFactorSettings form_factors;  // the interreflection's; hemicube_resolution 0: from the mesh
