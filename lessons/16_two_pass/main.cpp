@@ -4,6 +4,7 @@
 // traces eye rays through mirror and glass and, at the first diffuse surface, adds
 // direct light by shadow rays to the indirect light from the mesh -- read off it, or
 // gathered one bounce later. Every picture against the converged path-traced one.
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -154,13 +155,14 @@ void crops(const Settings& s, const std::vector<Picture>& pictures, const gi::Im
   const std::vector<CropPlace> places =
       s.scene == "cornell"
           ? std::vector<CropPlace>{{"shadow", "the floor between the blocks: their shadows", 0.36, 0.70},
-                                   {"corner", "the ceiling's back corner", 0.70, 0.10}}
+                                   {"corner", "the ceiling by the green wall: the gather's noise", 0.70, 0.10}}
           : std::vector<CropPlace>{{"caustic", "under the glass sphere: the caustic", 0.53, 0.64},
                                    {"mirror", "the mirror sphere", 0.2, 0.55}};
-  const int side = std::max(8, s.width / 6), factor = std::max(1, 128 / side);
+  const int side = std::min({std::max(8, s.width / 6), s.width, s.height}), factor = std::max(1, 128 / side);
   for (const CropPlace& place : places) {
     std::vector<gi::Image> row;
-    const int x = static_cast<int>(place.x * s.width), y = static_cast<int>(place.y * s.height);
+    const int x = std::min(static_cast<int>(place.x * s.width), s.width - side);
+    const int y = std::min(static_cast<int>(place.y * s.height), s.height - side);
     for (const Picture& p : pictures) row.push_back(gi::enlarge(gi::crop(p.radiance, x, y, side, side), factor));
     row.push_back(gi::enlarge(gi::crop(truth, x, y, side, side), factor));
     lesson.diagram(gi::side_by_side(row), s.scene + "_crop_" + place.stem,
@@ -185,9 +187,18 @@ void two_pass_lesson(const Settings& s, gi::Lesson& lesson) {
   const gi::View view{scene.camera, s.width, s.height, "the stored reference, averaged down"};
   lesson.picture(truth->mean, s.scene + "_path_traced", "the path-traced truth (lessons/references/)", view, 2);
   const gi::BlockMask mask = gi::diffuse_interior_blocks(scene, s.width, s.height, 8);
+  if (mask.count() == 0) {
+    lesson.say("no 8x8 block of " + s.scene + " lies inside one diffuse surface at this size: nothing to score");
+    return;
+  }
   score(s, scene, pictures, *truth, mask, lesson);
   if (scene.spheres.empty()) equal_time(s, scene, pictures.back(), static_cast<int>(pass.handoff.mesh.elements.size()), truth->mean, mask, lesson);
   crops(s, pictures, truth->mean, lesson);
+  std::vector<gi::Image> row;
+  for (const Picture& p : pictures) row.push_back(p.radiance);
+  row.push_back(truth->mean);
+  lesson.diagram(gi::side_by_side(row), s.scene + "_side_by_side",
+                 "ray traced, radiosity, two-pass mesh, two-pass gather, path traced", 2);
   lesson.diagram(gi::difference_image(pictures.back().radiance, truth->mean, 0.1), s.scene + "_gather_difference",
                  "|two-pass with final gather - path traced|, mean over channels: black 0, red 0.1 (radiance)");
 }
