@@ -212,7 +212,7 @@ int main(int argc, char** argv) {
   lesson.add_image_size(s.width, s.height);
   lesson.options()
       .add("--scene", s.scene, "what to render: both boxes, or one", {"both", "cornell", "cornell-spheres"})
-      .add("--elements", s.radiosity.elements, "about how many radiosity elements", 10, 100000)
+      .add("--elements", s.radiosity.elements, "about how many radiosity elements", 10, 20000)
       .add("--samples", s.eye.samples, "n x n eye rays per pixel", 1, 16)
       .add("--light-cells", s.eye.light_cells, "n x n shadow rays per light at each diffuse hit", 1, 64)
       .add("--gather", s.eye.gather_strata, "n x n final-gather rays at each diffuse hit", 1, 64);
