@@ -23,7 +23,8 @@ const char* const lessons[] = {"01_rays",         "02_recursive",        "03_ant
                                "04_soft_shadows", "05_acceleration",     "06_form_factors",
                                "07_hemicube",     "08_radiosity_system", "09_jacobi_gauss_seidel",
                                "10_southwell",    "11_progressive",      "12_solver_showdown",
-                               "14_path_tracing", "15_radiosity_vs_path_tracing"};
+                               "14_path_tracing", "15_radiosity_vs_path_tracing",
+                               "16_two_pass"};
 const char* const rendering[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows", "14_path_tracing"};
 // Lessons offer --seed only if they draw random numbers, --threads only if they use threads.
 const char* const without_seed[] = {"01_rays", "02_recursive", "09_jacobi_gauss_seidel", "10_southwell"};
