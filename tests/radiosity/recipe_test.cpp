@@ -41,7 +41,9 @@ TEST(RecipeHemicube, AFinerHemicubeAliasesLess) {
         gi::solve_recipe(box.surfaces, hemicube_recipe(300, resolution, gi::RecipeSolver::GaussSeidel));
     EXPECT_LT(r.hemicube.worst_sub_cell_share, last) << "resolution " << resolution;
     last = r.hemicube.worst_sub_cell_share;
-    if (resolution == 200) EXPECT_EQ(gi::hemicube_warning(r), "");
+    if (resolution == 200) {
+      EXPECT_EQ(gi::hemicube_warning(r), "");
+    }
   }
 }
 
