@@ -73,12 +73,7 @@ FormFactorMatrix form_factor_matrix_hemicube(const std::vector<Polygon>& polygon
   });
   if (stats) {
     *stats = {};
-    for (const HemicubeRow& row : counts) {
-      stats->sub_cell_receivers += row.sub_cell_receivers;
-      stats->sub_cell_missed += row.sub_cell_missed;
-      stats->rows_with_sub_cell_receivers += row.sub_cell_receivers > 0;
-      stats->worst_sub_cell_share = std::max(stats->worst_sub_cell_share, row.sub_cell_share);
-    }
+    for (const HemicubeRow& row : counts) stats->add_row(row.sub_cell_receivers, row.sub_cell_missed, row.sub_cell_share);
   }
   return F;
 }

@@ -34,6 +34,13 @@ struct HemicubeMatrixStats {
   long long sub_cell_missed = 0;
   int rows_with_sub_cell_receivers = 0;
   double worst_sub_cell_share = 0;  // the largest HemicubeRow::sub_cell_share of any row
+  // One more row's counts into the totals (the matrix's rows, or shooting's one by one).
+  void add_row(int receivers, int missed, double share) {
+    sub_cell_receivers += receivers;
+    sub_cell_missed += missed;
+    rows_with_sub_cell_receivers += receivers > 0;
+    worst_sub_cell_share = share > worst_sub_cell_share ? share : worst_sub_cell_share;
+  }
 };
 
 // The whole matrix, one hemicube per polygon, rows in parallel on `threads` threads

@@ -111,10 +111,7 @@ RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& re
       FormFactorRow shot = form_factor_row_with_diagnostics(receivers, mesh.patches[p].shape, p, r.form_factors);
       row_seconds += row_timer.seconds();
       rows[p] = std::move(shot.F);
-      result.hemicube.sub_cell_receivers += shot.sub_cell_receivers;
-      result.hemicube.sub_cell_missed += shot.sub_cell_missed;
-      result.hemicube.rows_with_sub_cell_receivers += shot.sub_cell_receivers > 0;
-      result.hemicube.worst_sub_cell_share = std::max(result.hemicube.worst_sub_cell_share, shot.sub_cell_share);
+      result.hemicube.add_row(shot.sub_cell_receivers, shot.sub_cell_missed, shot.sub_cell_share);
     }
     return rows[p];
   };
