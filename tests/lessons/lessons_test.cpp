@@ -197,6 +197,17 @@ TEST(Lessons, SolverShowdownDetectsDivergence) {
     EXPECT_TRUE(fs::exists(out_dir("12") + "/" + file)) << file;
 }
 
+// How much of the mesh study to run is one choice: two of its flags together are refused
+// in one line before any work.
+TEST(Lessons, SolverShowdownTakesOneMeshStudy) {
+  for (const char* args : {"--full --quick-mesh-study", "--skip-mesh-study --full", "--quick-mesh-study --skip-mesh-study"}) {
+    const LessonRun r = run("12_solver_showdown", std::string(args) + " --out " + out_dir("12_flags"));
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(out_dir("12_flags") + "/showdown.csv")) << "refused before any work: " << args;
+  }
+}
+
 // The bench's one line carries an error against the path-traced truth that falls as the
 // direct light moves from the mesh to the pixels (about 20% and 6% at 150 elements: a
 // shadow edge crosses the coarse elements), and refuses a bad recipe in one line.
