@@ -103,6 +103,7 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     bool robust = false;
     std::string out = "out/05_embree_bench";
+    std::string accel = "bvh-fast";
     gi::Options options("05_embree_bench", "Our BVH against Intel Embree 3 on quad_room, one thread.");
     options.add("--quads", quads, "about how many quads the room is made of", 50, 10'000'000)
         .add("--width", width, "camera rays: image width", 1, 8192)
@@ -112,12 +113,14 @@ int main(int argc, char** argv) {
         .add("--repeats", repeats, "timed runs of each query; the median is shown", 1, 100)
         .add("--seed", seed, "seed of the random rays")
         .add_flag("--robust", robust, "build Embree's scene with RTC_SCENE_FLAG_ROBUST (watertight, slower)")
+        .add("--accel", accel, "our walk of the tree: the lab's (bvh) or the production one (bvh-fast)",
+             {"bvh", "bvh-fast"})
         .add("--out", out, "folder for the tables (CSV)");
     if (!options.parse(argc, argv)) return 0;
 
     const gi::Scene scene = gi::quad_room(quads);
     gi::World world;
-    const double our_build = time_ms(repeats, [&] { world = gi::make_world(scene); });
+    const double our_build = time_ms(repeats, [&] { world = gi::make_world(scene, gi::acceleration_from_name(accel)); });
     Embree embree;
     const double embree_build = time_ms(repeats, [&] { make_embree_scene(embree, scene, robust); });
     gi::Table builds("Builds of " + scene.name + ": " + std::to_string(scene.quads.size()) + " quads, one thread",
