@@ -69,14 +69,17 @@ void expect_same_hits(const gi::Scene& scene, const std::vector<Ray>& rays, int 
 
 }  // namespace
 
-TEST(FastBvh, NodesAreOneCacheLineWithBothChildren) {
+TEST(FastBvh, AWideNodeStandsForUpToThreeBinaryOnes) {
   const gi::Bvh bvh = gi::build_bvh(gi::quad_room(1000));
   const gi::FastBvh fast = gi::make_fast_bvh(bvh);
-  EXPECT_EQ(sizeof(gi::FastBvhNode), 64u);
-  int leaves = 0;
-  for (const gi::BvhNode& node : bvh.nodes) leaves += node.count > 0;
-  EXPECT_EQ(fast.nodes.size(), bvh.nodes.size() - static_cast<std::size_t>(leaves))
-      << "one fast node per interior node of the plain tree";
+  EXPECT_EQ(sizeof(gi::FastBvhNode), 128u);
+  std::size_t interior = 0, leaves = 0, children = 0;
+  for (const gi::BvhNode& node : bvh.nodes) (node.count > 0 ? leaves : interior) += 1;
+  for (const gi::FastBvhNode& node : fast.nodes)
+    for (int c = 0; c < 4; ++c) children += node.index[c] >= 0;
+  EXPECT_EQ(children, fast.nodes.size() - 1 + leaves) << "every wide node and every leaf is one node's child once";
+  EXPECT_LE(3 * fast.nodes.size(), 2 * interior) << "a wide node should open more than one binary node";
+  EXPECT_GE(3 * fast.nodes.size(), interior) << "a wide node opens at most three binary ones";
   EXPECT_EQ(fast.refs.size(), bvh.refs.size());
 }
 

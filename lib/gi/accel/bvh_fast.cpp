@@ -10,52 +10,70 @@ namespace gi {
 
 namespace {
 
-// Child c of a fast node: its box from the plain tree's node, and what it holds.
-void set_child(FastBvhNode& node, int c, const BvhNode& child, std::int32_t index) {
-  for (int axis = 0; axis < 3; ++axis) {
-    node.bounds[axis][c] = child.lo[axis];
-    node.bounds[axis][2 + c] = child.hi[axis];
-  }
-  node.index[c] = index;
-  node.count[c] = child.count;
-}
+constexpr int width = 4;  // children per node
 
-// Emits the fast node for the plain tree's interior node `plain` and, depth first,
-// those of its interior descendants; returns its index.
+// Emits the wide node for the plain tree's interior node `plain` and, depth first,
+// those below it; returns its index. Its children: the plain node's two, then while
+// fewer than four, the interior child with the largest box replaced by its own two
+// (a ray is likelier to enter a large box, so opening it saves the most stops).
 std::int32_t emit(const Bvh& bvh, std::int32_t plain, FastBvh& fast) {
-  const auto at = static_cast<std::size_t>(fast.nodes.size());
+  const auto node_at = [&](std::int32_t i) -> const BvhNode& { return bvh.nodes[static_cast<std::size_t>(i)]; };
+  std::int32_t children[width] = {plain + 1, node_at(plain).offset};
+  int n = 2;
+  while (n < width) {
+    int open = -1;
+    double largest = -1;
+    for (int c = 0; c < n; ++c) {
+      const double area = surface_area(box(node_at(children[c])));
+      if (node_at(children[c]).count == 0 && area > largest) open = c, largest = area;
+    }
+    if (open < 0) break;  // all leaves
+    const std::int32_t opened = children[open];
+    children[open] = opened + 1;
+    children[n++] = node_at(opened).offset;
+  }
+  const auto at = fast.nodes.size();
   fast.nodes.emplace_back();
-  const std::int32_t children[2] = {plain + 1, bvh.nodes[static_cast<std::size_t>(plain)].offset};
-  for (int c = 0; c < 2; ++c) {
-    const BvhNode& child = bvh.nodes[static_cast<std::size_t>(children[c])];
-    const std::int32_t index = child.count > 0 ? child.offset : emit(bvh, children[c], fast);
-    set_child(fast.nodes[at], c, child, index);  // after emit, which may move fast.nodes
+  for (int c = 0; c < width; ++c) {
+    const bool used = c < n;
+    const std::int32_t index = !used ? -1 : node_at(children[c]).count > 0 ? node_at(children[c]).offset
+                                                                           : emit(bvh, children[c], fast);
+    FastBvhNode& node = fast.nodes[at];  // after emit, which may move fast.nodes
+    for (int axis = 0; axis < 3; ++axis) {
+      node.bounds[2 * axis][c] = used ? node_at(children[c]).lo[axis] : std::numeric_limits<float>::infinity();
+      node.bounds[2 * axis + 1][c] = used ? node_at(children[c]).hi[axis] : -std::numeric_limits<float>::infinity();
+    }
+    node.index[c] = index;
+    node.count[c] = used ? node_at(children[c]).count : 0;
   }
   return static_cast<std::int32_t>(at);
 }
 
-// Four floats in one register (GCC's vector extension: SSE on x86-64, NEON on ARM).
-// The lanes hold lo and lo, hi and hi of the two children, as the node's rows do.
+// Four floats in one register (GCC's vector extension: SSE on x86-64, NEON on ARM),
+// one lane per child.
 using float4 = float __attribute__((vector_size(16)));
 inline float4 splat(float x) { return float4{x, x, x, x}; }
-inline float4 swap_halves(float4 v) { return float4{v[2], v[3], v[0], v[1]}; }
-inline float4 min(float4 a, float4 b) { return a < b ? a : b; }
-inline float4 max(float4 a, float4 b) { return a > b ? a : b; }
+inline float4 load(const float* row) {
+  float4 v;
+  __builtin_memcpy(&v, row, sizeof v);
+  return v;
+}
 inline float4 abs(float4 v) { return v < 0 ? -v : v; }
 
 // The ray as the float slab test reads it, converted once per ray.
 //
 // Why the test never misses a box the double test hits. The box corners are floats
-// already (exact). The origin's rounding to float moves it by at most 2^-24 |o|: each
-// box is widened by pad = 2^-20 (max|o_i| + 1) on every side, which covers it. The
-// subtraction, the rounded 1/d and the product add a relative error of at most
-// 3 * 2^-24: entry and exit distances are widened by 2^-20 of themselves. A box can
-// come out a hair too large, which costs a visit, never a hit. 1/d is kept finite
-// (|1/d| <= 2^100, reached only where |d| < 2^-100): inf * 0 would make a NaN where the
-// ray runs inside a face's plane, and a distance beyond 2^100 * pad > 10^24 is none.
+// already (exact). The origin's rounding to float moves it by at most 2^-24 |o|: every
+// box is widened by pad = 2^-20 (max|o_i| + 1) on each side, which covers it (the
+// near face is moved towards the ray's start, origin_near; the far face away,
+// origin_far). The subtraction, the rounded 1/d and the product add a relative error
+// of at most 3 * 2^-24: entry and exit distances are widened by 2^-20 of themselves.
+// A box can come out a hair too large, which costs a visit, never a hit. 1/d is kept
+// finite (|1/d| <= 2^100, reached only where |d| < 2^-100): inf * 0 would make a NaN
+// where the ray runs inside a face's plane, and a distance past 2^100 * pad is none.
 struct FloatRay {
-  float4 origin[3];  // per axis: o + pad, o + pad, o - pad, o - pad (the box widened)
-  float4 inv_dir[3];
+  float4 origin_near[3], origin_far[3], inv_dir[3];
+  int near_row[3];  // the row of the face the ray meets first: lo's, or hi's where d < 0
 };
 constexpr float slack = 0x1p-20f;
 
@@ -64,44 +82,56 @@ FloatRay float_ray(const Ray& ray) {
   const double largest = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z)});
   const auto pad = static_cast<float>(0x1p-20 * (largest + 1));
   for (int axis = 0; axis < 3; ++axis) {
+    const float inv = static_cast<float>(std::clamp(1.0 / ray.direction[axis], -0x1p100, 0x1p100));
+    const bool backwards = std::signbit(inv);
     const auto o = static_cast<float>(ray.origin[axis]);
-    r.origin[axis] = float4{o + pad, o + pad, o - pad, o - pad};
-    r.inv_dir[axis] = splat(static_cast<float>(std::clamp(1.0 / ray.direction[axis], -0x1p100, 0x1p100)));
+    r.near_row[axis] = 2 * axis + (backwards ? 1 : 0);
+    r.origin_near[axis] = splat(backwards ? o - pad : o + pad);
+    r.origin_far[axis] = splat(backwards ? o + pad : o - pad);
+    r.inv_dir[axis] = splat(inv);
   }
   return r;
 }
 
-// Both children's slab tests at once. Lanes 0 and 1 of t_enter tell where the ray
-// enters child 0's and child 1's box; hit[c] whether it does within [t_min, t_max].
-// Per axis the four distances (lo - o) / d and (hi - o) / d of the two boxes are
-// computed together; near and far are their min and max, whichever way the ray runs.
-struct TwoSlabs {
+// The four children's slab tests at once: lane c of t_enter is where the ray enters
+// child c's box, and bit c of hits says whether it does within [t_min, t_max].
+struct FourSlabs {
   float4 t_enter;
-  bool hit[2];
+  unsigned hits;
 };
-inline TwoSlabs slabs(const FastBvhNode& node, const FloatRay& r, float4 t_min, float4 t_max) {
+inline FourSlabs slabs(const FastBvhNode& node, const FloatRay& r, float4 t_min, float4 t_max) {
   float4 t_enter = t_min, t_exit = t_max;
   for (int axis = 0; axis < 3; ++axis) {
-    float4 bounds;
-    __builtin_memcpy(&bounds, node.bounds[axis], sizeof bounds);
-    const float4 t = (bounds - r.origin[axis]) * r.inv_dir[axis];  // lo, lo, hi, hi
-    const float4 t_swapped = swap_halves(t);                          // hi, hi, lo, lo
-    t_enter = max(t_enter, min(t, t_swapped));
-    t_exit = min(t_exit, max(t, t_swapped));
+    const int near = r.near_row[axis], far = near ^ 1;  // the other face of the axis
+    const float4 t_near = (load(node.bounds[near]) - r.origin_near[axis]) * r.inv_dir[axis];
+    const float4 t_far = (load(node.bounds[far]) - r.origin_far[axis]) * r.inv_dir[axis];
+    t_enter = t_near > t_enter ? t_near : t_enter;
+    t_exit = t_far < t_exit ? t_far : t_exit;
   }
   t_enter -= slack * abs(t_enter);
   t_exit += slack * abs(t_exit);
-  return {t_enter, {t_enter[0] <= t_exit[0], t_enter[1] <= t_exit[1]}};
+  const auto inside = t_enter <= t_exit;  // lanes of all ones or zeros
+  unsigned hits = 0;
+  for (int c = 0; c < width; ++c) hits |= inside[c] ? 1u << c : 0u;
+  return {t_enter, hits};
 }
 
 // A node or a leaf still to visit, and where the ray enters its box.
 struct Pending {
   std::int32_t index;
-  std::int32_t count;  // 0: the interior node nodes[index]; > 0: a leaf
+  std::int32_t count;  // 0: the node nodes[index]; > 0: a leaf
   float t_enter;
 };
 
-Pending child(const FastBvhNode& node, int c, float t_enter) { return {node.index[c], node.count[c], t_enter}; }
+// A child about to wait on the stack. Its node is fetched now (a prefetch: the walk
+// goes on without waiting), so that it is in cache when the walk gets to it.
+Pending child(const FastBvh& bvh, const FastBvhNode& node, int c, float t_enter) {
+  if (node.count[c] == 0) __builtin_prefetch(&bvh.nodes[static_cast<std::size_t>(node.index[c])]);
+  return {node.index[c], node.count[c], t_enter};
+}
+
+// Up to three children wait on the stack per level.
+constexpr int fast_stack_size = (width - 1) * bvh_stack_size;
 
 }  // namespace
 
@@ -113,29 +143,35 @@ FastBvh make_fast_bvh(const Bvh& bvh) {
     emit(bvh, 0, fast);
     return fast;
   }
-  // The whole tree is one leaf: a root with that leaf as both children. Its primitives
-  // are tested twice; the second time finds nothing nearer, and nothing new.
+  // The whole tree is one leaf: a root with that leaf as its only child.
   FastBvhNode root{};
-  set_child(root, 0, bvh.nodes[0], bvh.nodes[0].offset);
-  set_child(root, 1, bvh.nodes[0], bvh.nodes[0].offset);
+  for (int c = 0; c < width; ++c) {
+    const bool used = c == 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      root.bounds[2 * axis][c] = used ? bvh.nodes[0].lo[axis] : std::numeric_limits<float>::infinity();
+      root.bounds[2 * axis + 1][c] = used ? bvh.nodes[0].hi[axis] : -std::numeric_limits<float>::infinity();
+    }
+    root.index[c] = used ? bvh.nodes[0].offset : -1;
+    root.count[c] = used ? bvh.nodes[0].count : 0;
+  }
   fast.nodes.push_back(root);
   return fast;
 }
 
-// Front to back, as the plain closest_hit: the nearer child first, the farther one on
-// the stack with its entry distance, skipped when a nearer hit has been found by then.
+// Front to back, as the plain closest_hit: of the children the ray enters, the nearest
+// next and the others on the stack, farthest lowest, each with its entry distance, and
+// skipped when a nearer hit has been found by the time it comes off.
 [[gnu::flatten]] std::optional<Hit> closest_hit(const FastBvh& bvh, const Scene& scene, Ray& ray) {
   if (bvh.nodes.empty()) return std::nullopt;
   const FloatRay r = float_ray(ray);
   // The ray's extent in float, converted once per ray and once per hit, not per node.
   const float4 t_min = splat(static_cast<float>(ray.t_min));
   float4 t_max = splat(static_cast<float>(ray.t_max));
-  Pending stack[bvh_stack_size];
+  Pending stack[fast_stack_size];
   int size = 0;
   std::optional<Hit> nearest;
   Pending current{0, 0, 0};
   for (;;) {
-    bool descend = false;
     if (current.count > 0) {
       for (std::int32_t i = current.index; i < current.index + current.count; ++i) {
         if (auto hit = intersect(ray, scene, bvh.refs[static_cast<std::size_t>(i)])) {
@@ -146,32 +182,28 @@ FastBvh make_fast_bvh(const Bvh& bvh) {
       }
     } else {
       const FastBvhNode& node = bvh.nodes[static_cast<std::size_t>(current.index)];
-      const TwoSlabs s = slabs(node, r, t_min, t_max);
-      // Branches, not a computed index: the processor predicts a branch and fetches the
-      // next node before the slab test is done; an index computed from the test's
-      // result would make every visit wait for it (measured: 1.6x slower).
-      descend = true;
-      if (s.hit[0] && s.hit[1]) {
-        if (s.t_enter[0] <= s.t_enter[1]) {
-          stack[size++] = child(node, 1, s.t_enter[1]);
-          current = child(node, 0, s.t_enter[0]);
-        } else {
-          stack[size++] = child(node, 0, s.t_enter[0]);
-          current = child(node, 1, s.t_enter[1]);
+      const FourSlabs s = slabs(node, r, t_min, t_max);
+      // The children entered, pushed in order of entry, the nearest last; then taken
+      // back off below. Branches on the hit mask rather than indices computed from the
+      // test: the processor predicts a branch and fetches the next node before the
+      // test is done (an index computed from its result made every visit wait for it:
+      // 1.3-1.7x slower, docs/05).
+      const int first = size;
+      for (int c = 0; c < width; ++c) {
+        if (!(s.hits & (1u << c))) continue;
+        // Insertion: slide those entered no later up by one (on a tie the child
+        // with the lower index goes first, as the plain walk's left child does).
+        int at = size++;
+        while (at > first && stack[at - 1].t_enter <= s.t_enter[c]) {
+          stack[at] = stack[at - 1];
+          --at;
         }
-      } else if (s.hit[0]) {
-        current = child(node, 0, s.t_enter[0]);
-      } else if (s.hit[1]) {
-        current = child(node, 1, s.t_enter[1]);
-      } else {
-        descend = false;
+        stack[at] = child(bvh, node, c, s.t_enter[c]);
       }
     }
-    if (!descend) {
-      while (size > 0 && stack[size - 1].t_enter > ray.t_max) --size;
-      if (size == 0) return nearest;
-      current = stack[--size];
-    }
+    while (size > 0 && stack[size - 1].t_enter > ray.t_max) --size;
+    if (size == 0) return nearest;
+    current = stack[--size];
   }
 }
 
@@ -180,31 +212,21 @@ FastBvh make_fast_bvh(const Bvh& bvh) {
   if (bvh.nodes.empty()) return false;
   const FloatRay r = float_ray(ray);
   const float4 t_min = splat(static_cast<float>(ray.t_min)), t_max = splat(static_cast<float>(ray.t_max));
-  Pending stack[bvh_stack_size];
+  Pending stack[fast_stack_size];
   int size = 0;
   Pending current{0, 0, 0};
   for (;;) {
-    bool descend = false;
     if (current.count > 0) {
       for (std::int32_t i = current.index; i < current.index + current.count; ++i)
         if (intersect(ray, scene, bvh.refs[static_cast<std::size_t>(i)])) return true;
     } else {
       const FastBvhNode& node = bvh.nodes[static_cast<std::size_t>(current.index)];
-      const TwoSlabs s = slabs(node, r, t_min, t_max);
-      descend = true;  // branches, as in closest_hit
-      if (s.hit[0]) {
-        if (s.hit[1]) stack[size++] = child(node, 1, 0);
-        current = child(node, 0, 0);
-      } else if (s.hit[1]) {
-        current = child(node, 1, 0);
-      } else {
-        descend = false;
-      }
+      const FourSlabs s = slabs(node, r, t_min, t_max);
+      for (int c = 0; c < width; ++c)
+        if (s.hits & (1u << c)) stack[size++] = child(bvh, node, c, 0);
     }
-    if (!descend) {
-      if (size == 0) return false;
-      current = stack[--size];
-    }
+    if (size == 0) return false;
+    current = stack[--size];
   }
 }
 
