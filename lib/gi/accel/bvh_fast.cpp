@@ -123,12 +123,7 @@ struct Pending {
   float t_enter;
 };
 
-// A child about to wait on the stack. Its node is fetched now (a prefetch: the walk
-// goes on without waiting), so that it is in cache when the walk gets to it.
-Pending child(const FastBvh& bvh, const FastBvhNode& node, int c, float t_enter) {
-  if (node.count[c] == 0) __builtin_prefetch(&bvh.nodes[static_cast<std::size_t>(node.index[c])]);
-  return {node.index[c], node.count[c], t_enter};
-}
+Pending child(const FastBvhNode& node, int c, float t_enter) { return {node.index[c], node.count[c], t_enter}; }
 
 // Up to three children wait on the stack per level.
 constexpr int fast_stack_size = (width - 1) * bvh_stack_size;
@@ -198,7 +193,7 @@ FastBvh make_fast_bvh(const Bvh& bvh) {
           stack[at] = stack[at - 1];
           --at;
         }
-        stack[at] = child(bvh, node, c, s.t_enter[c]);
+        stack[at] = child(node, c, s.t_enter[c]);
       }
     }
     while (size > 0 && stack[size - 1].t_enter > ray.t_max) --size;
@@ -223,7 +218,7 @@ FastBvh make_fast_bvh(const Bvh& bvh) {
       const FastBvhNode& node = bvh.nodes[static_cast<std::size_t>(current.index)];
       const FourSlabs s = slabs(node, r, t_min, t_max);
       for (int c = 0; c < width; ++c)
-        if (s.hits & (1u << c)) stack[size++] = child(bvh, node, c, 0);
+        if (s.hits & (1u << c)) stack[size++] = child(node, c, 0);
     }
     if (size == 0) return false;
     current = stack[--size];
