@@ -240,7 +240,7 @@ void threads_table(double scale, gi::Lesson& lesson) {
 int main(int argc, char** argv) {
   gi::Lesson lesson("05_acceleration", "Bounding volumes and threads: brute force, a box per object and a BVH "
                                        "on 10 to 100 000 spheres; a room of quads; speedup per thread.");
-  int width = 160, height = 120, max_spheres = 100000, room_quads = 100000, change_rays = 65536;
+  int width = 160, height = 120, max_spheres = 100000, room_quads = 100000, change_rays = 16384;
   double picture_scale = 0.5;  // 1: the lessons' own sizes (docs/05 says which figures are which)
   lesson.add_image_size(width, height, "eye-ray image (spheres table)");
   lesson.options()
