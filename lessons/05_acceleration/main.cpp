@@ -1,7 +1,8 @@
 // Lesson 05 -- bounding volumes and parallel computation. "Most work is spent testing
 // intersections": brute force against a box per object against a bounding volume
-// hierarchy, on 10 to 100 000 spheres; BVH throughput on a room of 100 000 quads; and
-// the render of every lesson so far on 1, 2, ... threads, with the same bytes.
+// hierarchy, on 10 to 100 000 spheres; BVH throughput on a room of 100 000 quads, and
+// what each change to the tree and its walk buys there; and the render of every lesson
+// so far on 1, 2, ... threads, with the same bytes.
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -11,6 +11,7 @@
 
 #include "gi/accel/bvh_traverse.hpp"
 #include "gi/core/rng.hpp"
+#include "gi/core/sampling.hpp"
 #include "gi/scene/benchmark_scenes.hpp"
 #include "gi/scene/builtin_scenes.hpp"
 #include "gi/scene/camera.hpp"
@@ -20,18 +21,14 @@ using gi::vec3;
 
 namespace {
 
-vec3 random_direction(gi::Rng& rng) {
-  const double z = 2 * rng.uniform() - 1, phi = 2 * gi::pi * rng.uniform(), s = std::sqrt(1 - z * z);
-  return {s * std::cos(phi), s * std::sin(phi), z};
-}
-
 // Random rays in the box [lo, hi]; every other one is snapped to an axis or to a
 // plane (a direction component of exactly +0 or -0), some start on a wall's plane.
 std::vector<Ray> hard_rays(const vec3& lo, const vec3& hi, int count, std::uint64_t seed) {
   gi::Rng rng(seed);
   std::vector<Ray> rays;
   for (int i = 0; i < count; ++i) {
-    Ray ray{lo + (hi - lo) * vec3(rng.uniform(), rng.uniform(), rng.uniform()), random_direction(rng)};
+    const vec3 origin = lo + (hi - lo) * vec3(rng.uniform(), rng.uniform(), rng.uniform());
+    Ray ray{origin, gi::sample_uniform_sphere({rng.uniform(), rng.uniform()})};
     const int axis = i % 3;
     if (i % 2 == 1) ray.direction[axis] = (i % 4 == 1) ? 0.0 : -0.0;  // inside a slab's planes
     if (i % 8 == 3) ray.direction[(axis + 1) % 3] = 0.0;              // along an axis
