@@ -13,6 +13,7 @@
 
 #include "gi/accel/ray_sets.hpp"
 #include "gi/accel/world.hpp"
+#include "gi/core/not_implemented.hpp"
 #include "gi/core/timer.hpp"
 #include "gi/raytrace/render.hpp"
 #include "gi/report/chart.hpp"
@@ -136,7 +137,7 @@ void changes_table(int quads, int rays_per_kind, gi::Lesson& lesson) {
     gi::Acceleration walk;
     gi::BvhSettings settings;
   };
-  const Change changes[] = {
+  std::vector<Change> changes = {
       {"lab walk, median split, leaf 4", gi::Acceleration::Bvh, {4, 12, gi::Split::Median}},
       {"lab walk, SAH 4 bins, leaf 4", gi::Acceleration::Bvh, {4, 4, gi::Split::Sah}},
       {"lab walk, SAH 12 bins, leaf 4 (default)", gi::Acceleration::Bvh, {4, 12, gi::Split::Sah}},
@@ -146,6 +147,15 @@ void changes_table(int quads, int rays_per_kind, gi::Lesson& lesson) {
       {"fast walk, SAH 12 bins, leaf 4", gi::Acceleration::FastBvh, {4, 12, gi::Split::Sah}},
       {"fast walk, SAH 12 bins, leaf 8", gi::Acceleration::FastBvh, {8, 12, gi::Split::Sah}}};
   const gi::Scene scene = gi::quad_room(quads);
+  // A student kit leaves the fast walk out with exercise 5.2 (it would show the answer):
+  // there, its rows are left out of the table rather than stopping the lesson.
+  try {
+    const gi::Scene room = gi::quad_room(1);
+    gi::closest_hit(gi::make_world(room, gi::Acceleration::FastBvh, {}), gi::camera_rays(room, 1, 1)[0]);
+  } catch (const gi::NotImplemented&) {
+    std::erase_if(changes, [](const Change& c) { return c.walk == gi::Acceleration::FastBvh; });
+    lesson.say("(the fast walk is not in this student kit: its rows are left out)");
+  }
   gi::Rng rng(lesson.seed());
   const int side = static_cast<int>(std::sqrt(static_cast<double>(rays_per_kind)));
   const std::vector<gi::Ray> camera = gi::camera_rays(scene, side, side);
@@ -161,9 +171,9 @@ void changes_table(int quads, int rays_per_kind, gi::Lesson& lesson) {
     build_ms.push_back(build.milliseconds());
   }
   // times[row][query]: one entry per round.
-  std::vector<std::array<std::vector<double>, 3>> times(std::size(changes));
+  std::vector<std::array<std::vector<double>, 3>> times(changes.size());
   for (int round = 0; round < 5; ++round)
-    for (std::size_t i = 0; i < std::size(changes); ++i) {
+    for (std::size_t i = 0; i < changes.size(); ++i) {
       times[i][0].push_back(cast(worlds[i], camera, true, 1).seconds);
       times[i][1].push_back(cast(worlds[i], random, true, 1).seconds);
       times[i][2].push_back(cast(worlds[i], shadow, false, 1).seconds);
@@ -174,7 +184,7 @@ void changes_table(int quads, int rays_per_kind, gi::Lesson& lesson) {
                   {{"tree and walk"}, {"build ms", 1}, {"camera Mrays/s", 2}, {"x", 2}, {"random Mrays/s", 2}, {"x", 2},
                    {"random 4 m any hit Mrays/s", 2}, {"x", 2}});
   const std::size_t base = 2;  // the lab's default tree and walk
-  for (std::size_t i = 0; i < std::size(changes); ++i) {
+  for (std::size_t i = 0; i < changes.size(); ++i) {
     std::vector<gi::Cell> row{changes[i].label, build_ms[i]};
     const std::size_t counts[] = {camera.size(), random.size(), shadow.size()};
     for (int q = 0; q < 3; ++q) {

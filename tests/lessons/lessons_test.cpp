@@ -146,7 +146,10 @@ TEST(Lessons, AccelerationTablesAndChart) {
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("BVH, SAH"), std::string::npos);
   EXPECT_EQ(r.output.find(" NO"), std::string::npos) << "an image differed between thread counts:\n" << r.output;
-  EXPECT_NE(r.output.find("fast walk, SAH 12 bins, leaf 4"), std::string::npos) << r.output;
+  // In a student kit the fast walk is left out with exercise 5.2, and its rows with it.
+  EXPECT_TRUE(r.output.find("fast walk, SAH 12 bins, leaf 4") != std::string::npos ||
+              r.output.find("the fast walk is not in this student kit") != std::string::npos)
+      << r.output;
   for (const char* file : {"spheres.csv", "time_vs_n.svg", "quad_room.csv", "changes.csv", "threads.csv"})
     EXPECT_TRUE(fs::exists(out_dir("05") + "/" + file)) << file;
   std::size_t rows = 0;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "gi/accel/bvh_traverse.hpp"
+#include "gi/core/not_implemented.hpp"
 
 namespace gi {
 
@@ -100,6 +101,7 @@ struct FourSlabs {
   unsigned hits;
 };
 inline FourSlabs slabs(const FastBvhNode& node, const FloatRay& r, float4 t_min, float4 t_max) {
+  // BEGIN KIT-HIDDEN WITH 5.1 the four-wide slab test of the fast walk (use --accel bvh)
   float4 t_enter = t_min, t_exit = t_max;
   for (int axis = 0; axis < 3; ++axis) {
     const int near = r.near_row[axis], far = near ^ 1;  // the other face of the axis
@@ -114,6 +116,7 @@ inline FourSlabs slabs(const FastBvhNode& node, const FloatRay& r, float4 t_min,
   unsigned hits = 0;
   for (int c = 0; c < width; ++c) hits |= inside[c] ? 1u << c : 0u;
   return {t_enter, hits};
+  // END KIT-HIDDEN WITH 5.1
 }
 
 // A node or a leaf still to visit, and where the ray enters its box.
@@ -157,6 +160,7 @@ FastBvh make_fast_bvh(const Bvh& bvh) {
 // next and the others on the stack, farthest lowest, each with its entry distance, and
 // skipped when a nearer hit has been found by the time it comes off.
 [[gnu::flatten]] std::optional<Hit> closest_hit(const FastBvh& bvh, const Scene& scene, Ray& ray) {
+  // BEGIN KIT-HIDDEN WITH 5.2 the fast walk (use --accel bvh)
   if (bvh.nodes.empty()) return std::nullopt;
   const FloatRay r = float_ray(ray);
   // The ray's extent in float, converted once per ray and once per hit, not per node.
@@ -200,10 +204,12 @@ FastBvh make_fast_bvh(const Bvh& bvh) {
     if (size == 0) return nearest;
     current = stack[--size];
   }
+  // END KIT-HIDDEN WITH 5.2
 }
 
 // Any hit ends the walk; the order of the children does not matter.
 [[gnu::flatten]] bool any_hit(const FastBvh& bvh, const Scene& scene, const Ray& ray) {
+  // BEGIN KIT-HIDDEN WITH 5.2 the fast walk's any hit (use --accel bvh)
   if (bvh.nodes.empty()) return false;
   const FloatRay r = float_ray(ray);
   const float4 t_min = splat(static_cast<float>(ray.t_min)), t_max = splat(static_cast<float>(ray.t_max));
@@ -223,6 +229,7 @@ FastBvh make_fast_bvh(const Bvh& bvh) {
     if (size == 0) return false;
     current = stack[--size];
   }
+  // END KIT-HIDDEN WITH 5.2
 }
 
 }  // namespace gi
