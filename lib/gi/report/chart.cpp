@@ -96,8 +96,13 @@ std::vector<double> axis_ticks(double lo, double hi, bool log) {
 std::string to_svg(const Chart& chart, int width, int height) {
   const double left = 80, right = width - 200.0, top = 40, bottom = height - 60.0;
   const Axis ax = make_axis(chart, true), ay = make_axis(chart, false);
+  // The legend sits right of the plot; a long series name widens the picture rather
+  // than being cut off (about 7 px per character at font size 12).
+  std::size_t longest = 0;
+  for (const Series& series : chart.series) longest = std::max(longest, series.name.size());
+  const int total_width = std::max(width, static_cast<int>(right + 46 + 7.0 * longest + 10));
   std::ostringstream os;
-  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << total_width << "\" height=\"" << height
      << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
      << "<text x=\"" << num((left + right) / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
