@@ -58,3 +58,13 @@ TEST(Chart, ALongLegendNameWidensThePicture) {
   const int width = std::stoi(svg.substr(at));
   EXPECT_GE(width, 720 - 200 + 46 + 7 * 60) << "the legend's text starts 46 px right of the plot";
 }
+
+// A title longer than the plot is wide starts inside the picture: its centre is at
+// least half its estimated length (8 px a character at font size 15) from the left.
+TEST(Chart, ALongTitleStaysInsideThePicture) {
+  const std::string title(100, 'T');
+  const std::string svg = gi::to_svg(gi::Chart{title, "x", "y", false, false, {}}, 720, 480);
+  const std::size_t at = svg.find("<text x=\"") + 9;
+  EXPECT_GE(std::stod(svg.substr(at)), 4.0 * 100);
+  EXPECT_GE(std::stoi(svg.substr(svg.find("width=\"") + 7)), 8 * 100);
+}
