@@ -116,14 +116,14 @@ def check_kit_text(root, folder, punched, hidden=()):
     for r in punched:
         if r.id not in stubbed or regions.body(folder, stubbed[r.id]) != [r.stub()]:
             raise KitError(f"exercise {r.id} is not stubbed in the kit")
-    # Matched in their order in each file: stubbing moves the lines.
+    # Matched by their order in each file: stubbing moves the lines.
     in_kit = regions.find_companions(folder, stubbed.values())
-    for r in hidden:
-        mine = [x for x in hidden if x.path == r.path]
-        theirs = [x for x in in_kit if x.path == r.path]
-        there = theirs[mine.index(r)] if len(theirs) == len(mine) else None
-        if there is None or regions.body(folder, there) != [r.stub()]:
-            raise KitError(f"{r.path}:{r.begin + 1}: the code hidden with exercise {r.id} is left in the kit")
+    for path in sorted({r.path for r in hidden}):
+        mine = [r for r in hidden if r.path == path]
+        theirs = [regions.body(folder, r) for r in in_kit if r.path == path] + [None] * len(mine)
+        for r, body in zip(mine, theirs):
+            if body != [r.stub()]:
+                raise KitError(f"{r.path}:{r.begin + 1}: the code hidden with exercise {r.id} is left in the kit")
     found = leaks(folder, distinctive_lines(root, list(punched) + list(hidden)))
     if found:
         where, ident = found[0]

@@ -216,13 +216,13 @@ std::vector<Method> methods(Study study) {
   shooting.elements_per_side = 3;  // shoot from patches, receive at 3 x 3 elements each
   differential.form_factors.method = gi::FormFactorMethod::Differential;
   std::vector<Method> list;
-  // `sizes`: the full study's meshes; `lesson`: those of them the default run shows.
-  const auto add = [&](const std::string& family, std::vector<int> sizes, std::vector<int> lesson,
+  // `sizes`: the full study's meshes; `by_default`: those of them the default run shows.
+  const auto add = [&](const std::string& family, std::vector<int> sizes, std::vector<int> by_default,
                        const gi::Recipe& recipe, bool per_pixel = false) {
     for (int n : sizes) {
       const bool shown = study == Study::Full    ? true
                          : study == Study::Small ? n <= 500
-                                                 : std::find(lesson.begin(), lesson.end(), n) != lesson.end();
+                                                 : std::find(by_default.begin(), by_default.end(), n) != by_default.end();
       if (shown) list.push_back({family, n, recipe, per_pixel});
     }
   };
