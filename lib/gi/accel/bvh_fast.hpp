@@ -37,6 +37,7 @@ static_assert(sizeof(FastBvhNode) == 128, "two cache lines");
 struct FastBvh {
   std::vector<FastBvhNode> nodes;  // nodes[0] is the root
   std::vector<PrimitiveRef> refs;  // the plain tree's refs, in the same order
+  float reach = 0;                 // the largest |coordinate| of any box: sets the float test's margin
 };
 
 // Re-lays a built tree out for the fast walk (linear in its size).
