@@ -153,14 +153,27 @@ struct Pending {
 
 Pending child(const FastBvhNode& node, int c, float t_enter) { return {node.index[c], node.count[c], t_enter}; }
 
+// The ray against refs[i]: a quad from the copy beside the refs, as the same quad in
+// scene.quads gives the same bits; another kind from the scene.
+inline std::optional<Hit> intersect(const Ray& ray, const Scene& scene, const FastBvh& bvh, std::int32_t i) {
+  const PrimitiveRef ref = bvh.refs[static_cast<std::size_t>(i)];
+  if (ref.kind != PrimitiveKind::Quad) return intersect(ray, scene, ref);
+  auto hit = intersect(ray, bvh.quads[static_cast<std::size_t>(i)]);
+  if (hit) hit->object = ref.index;
+  return hit;
+}
+
 // Up to three children wait on the stack per level.
 constexpr int fast_stack_size = (width - 1) * bvh_stack_size;
 
 }  // namespace
 
-FastBvh make_fast_bvh(const Bvh& bvh) {
-  FastBvh fast{{}, bvh.refs, 0};
+FastBvh make_fast_bvh(const Bvh& bvh, const Scene& scene) {
+  FastBvh fast{{}, bvh.refs, {}, 0};
   if (bvh.nodes.empty()) return fast;
+  fast.quads.resize(bvh.refs.size());
+  for (std::size_t i = 0; i < bvh.refs.size(); ++i)
+    if (bvh.refs[i].kind == PrimitiveKind::Quad) fast.quads[i] = scene.quads[static_cast<std::size_t>(bvh.refs[i].index)];
   for (int axis = 0; axis < 3; ++axis)
     fast.reach = std::max({fast.reach, std::abs(bvh.nodes[0].lo[axis]), std::abs(bvh.nodes[0].hi[axis])});
   if (bvh.nodes[0].count == 0) {
@@ -198,7 +211,7 @@ FastBvh make_fast_bvh(const Bvh& bvh) {
   for (;;) {
     if (current.count > 0) {
       for (std::int32_t i = current.index; i < current.index + current.count; ++i) {
-        if (auto hit = intersect(ray, scene, bvh.refs[static_cast<std::size_t>(i)])) {
+        if (auto hit = intersect(ray, scene, bvh, i)) {
           ray.t_max = hit->t;
           t_max = splat(float_up(hit->t));
           nearest = hit;
@@ -255,7 +268,7 @@ FastBvh make_fast_bvh(const Bvh& bvh) {
   for (;;) {
     if (current.count > 0) {
       for (std::int32_t i = current.index; i < current.index + current.count; ++i)
-        if (intersect(ray, scene, bvh.refs[static_cast<std::size_t>(i)])) return true;
+        if (intersect(ray, scene, bvh, i)) return true;
     } else {
       const FastBvhNode& node = bvh.nodes[static_cast<std::size_t>(current.index)];
       unsigned hits = slabs(node, r, t_max).hits;

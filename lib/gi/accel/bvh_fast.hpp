@@ -37,11 +37,14 @@ static_assert(sizeof(FastBvhNode) == 128, "two cache lines");
 struct FastBvh {
   std::vector<FastBvhNode> nodes;  // nodes[0] is the root
   std::vector<PrimitiveRef> refs;  // the plain tree's refs, in the same order
+  // refs[i]'s quad, copied, where refs[i] is a quad (elsewhere unused): a leaf's quads
+  // side by side in memory, where scene.quads scatters them over the whole room.
+  std::vector<Quad> quads;
   float reach = 0;                 // the largest |coordinate| of any box: sets the float test's margin
 };
 
 // Re-lays a built tree out for the fast walk (linear in its size).
-FastBvh make_fast_bvh(const Bvh& bvh);
+FastBvh make_fast_bvh(const Bvh& bvh, const Scene& scene);
 
 // As closest_hit(const Bvh&, ...) and any_hit(const Bvh&, ...) of bvh_traverse.hpp,
 // with no counts: the same hit or answer for every ray (a test holds them to it).
