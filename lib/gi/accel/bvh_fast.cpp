@@ -93,6 +93,7 @@ inline unsigned lane_mask(int4 lanes) {
 struct FloatRay {
   float4 origin_near[3], origin_far[3], inv_dir[3];
   int near_row[3];  // the row of the face the ray meets first: lo's, or hi's where d < 0
+  int far_row[3];   // the other face's
   float4 t_min;     // the ray's extent, rounded outwards
 };
 
@@ -115,6 +116,7 @@ FloatRay float_ray(const Ray& ray, float reach) {
     const bool backwards = std::signbit(inv);
     const auto o = static_cast<float>(ray.origin[axis]);
     r.near_row[axis] = 2 * axis + (backwards ? 1 : 0);
+    r.far_row[axis] = 2 * axis + (backwards ? 0 : 1);
     r.origin_near[axis] = splat(backwards ? o - pad : o + pad);
     r.origin_far[axis] = splat(backwards ? o + pad : o - pad);
     r.inv_dir[axis] = splat(inv);
@@ -133,9 +135,8 @@ inline FourSlabs slabs(const FastBvhNode& node, const FloatRay& r, float4 t_max)
   // BEGIN KIT-HIDDEN WITH 5.1 the four-wide slab test of the fast walk (use --accel bvh)
   float4 t_enter = r.t_min, t_exit = t_max;
   for (int axis = 0; axis < 3; ++axis) {
-    const int near = r.near_row[axis], far = near ^ 1;  // the other face of the axis
-    const float4 t_near = (load(node.bounds[near]) - r.origin_near[axis]) * r.inv_dir[axis];
-    const float4 t_far = (load(node.bounds[far]) - r.origin_far[axis]) * r.inv_dir[axis];
+    const float4 t_near = (load(node.bounds[r.near_row[axis]]) - r.origin_near[axis]) * r.inv_dir[axis];
+    const float4 t_far = (load(node.bounds[r.far_row[axis]]) - r.origin_far[axis]) * r.inv_dir[axis];
     t_enter = t_near > t_enter ? t_near : t_enter;
     t_exit = t_far < t_exit ? t_far : t_exit;
   }
