@@ -89,7 +89,7 @@ Acceleration acceleration_from_name(const std::string& text) {
 World make_world(Scene scene, Acceleration acceleration, const BvhSettings& settings) {
   World world{std::move(scene), acceleration, {}, {}, {}};
   if (acceleration == Acceleration::Bvh) world.bvh = build_bvh(world.scene, settings);
-  if (acceleration == Acceleration::FastBvh) world.fast_bvh = make_fast_bvh(build_bvh(world.scene, settings));
+  if (acceleration == Acceleration::FastBvh) world.fast_bvh = make_fast_bvh(build_bvh(world.scene, settings), world.scene);
   if (acceleration == Acceleration::BoundingBoxes) {
     world.boxes.reserve(world.scene.spheres.size() + world.scene.quads.size() + world.scene.triangles.size());
     for (const Sphere& sphere : world.scene.spheres) world.boxes.push_back(bounds(sphere));
