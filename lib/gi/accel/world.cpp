@@ -87,7 +87,8 @@ Acceleration acceleration_from_name(const std::string& text) {
 }
 
 World make_world(Scene scene, Acceleration acceleration, const BvhSettings& settings) {
-  World world{std::move(scene), acceleration, {}, {}, {}};
+  World world{std::move(scene), acceleration, {}, {}, {}, {}};
+  if (acceleration == Acceleration::BruteForce) world.packed = pack(world.scene.spheres);
   if (acceleration == Acceleration::Bvh) world.bvh = build_bvh(world.scene, settings);
   if (acceleration == Acceleration::FastBvh) world.fast_bvh = make_fast_bvh(build_bvh(world.scene, settings));
   if (acceleration == Acceleration::BoundingBoxes) {
@@ -109,7 +110,8 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
   std::optional<Hit> nearest;
   switch (world.acceleration) {
     case Acceleration::BruteForce:
-      closest_in(scene.spheres, ray, nearest, local);
+      closest_sphere(world.packed, scene.spheres, ray, nearest);
+      local.primitive_tests += scene.spheres.size();  // every sphere is tested, two at a time
       closest_in(scene.quads, ray, nearest, local);
       closest_in(scene.triangles, ray, nearest, local);
       break;
@@ -138,9 +140,13 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
   TraversalCounts local;
   bool hit = false;
   switch (world.acceleration) {
-    case Acceleration::BruteForce:
-      hit = any_in(scene.spheres, ray, local) || any_in(scene.quads, ray, local) || any_in(scene.triangles, ray, local);
+    case Acceleration::BruteForce: {
+      const int blocker = any_sphere(world.packed, scene.spheres, ray);
+      // Counted as the plain loop counts: up to and including the first sphere hit.
+      local.primitive_tests += blocker >= 0 ? blocker + 1 : scene.spheres.size();
+      hit = blocker >= 0 || any_in(scene.quads, ray, local) || any_in(scene.triangles, ray, local);
       break;
+    }
     case Acceleration::BoundingBoxes: {
       const vec3 inv_dir = 1.0 / ray.direction;
       hit = any_in_boxes(scene.spheres, world.boxes.data(), ray, inv_dir, local) ||

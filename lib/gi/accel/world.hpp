@@ -6,11 +6,13 @@
 #include "gi/accel/bvh.hpp"
 #include "gi/accel/bvh_fast.hpp"
 #include "gi/accel/traversal_counts.hpp"
+#include "gi/geometry/packed_spheres.hpp"
 
 namespace gi {
 
 // The lecture's three ways to find what a ray hits, fastest last:
-//   BruteForce     test the ray against every primitive: N tests per ray
+//   BruteForce     test the ray against every primitive: N tests per ray (the spheres
+//                  two at a time, packed_spheres.hpp)
 //   BoundingBoxes  a box around each object, tested first; the object itself only
 //                  when its box is hit. Still N tests, but a box test is cheaper than
 //                  most objects' own
@@ -33,6 +35,7 @@ struct World {
   Bvh bvh;                  // Acceleration::Bvh only
   FastBvh fast_bvh;         // Acceleration::FastBvh only
   std::vector<Aabb> boxes;  // Acceleration::BoundingBoxes only: the spheres' boxes, then the quads'
+  PackedSpheres packed;     // Acceleration::BruteForce only: the spheres, coordinate by coordinate
 };
 
 // Takes the scene and builds what the acceleration needs: the tree (with `settings`)
