@@ -1,5 +1,8 @@
 #include "gi/geometry/packed_spheres.hpp"
 
+#include <emmintrin.h>
+
+#include <cstring>
 #include <limits>
 
 namespace gi {
@@ -40,9 +43,12 @@ struct LanesRay {
   const auto behind = (c0 > zero) & (h > zero);  // per lane: all bits set (true) or none
   const auto outside = (h * h - r.a * c0) < (minus_4_eps * h * h);
   const auto rejected = behind | outside;
-  int maybe = 0;
-  for (int j = 0; j < width; ++j) maybe |= rejected[j] ? 0 : 1 << j;
-  return maybe;
+  // The four lanes' sign bits in an int, two at a time (SSE2's movmskpd): a loop over
+  // the lanes would move each one out of the vector register on its own.
+  __m128d low, high;
+  std::memcpy(&low, &rejected, sizeof low);
+  std::memcpy(&high, reinterpret_cast<const char*>(&rejected) + sizeof low, sizeof high);
+  return ~(_mm_movemask_pd(low) | _mm_movemask_pd(high) << 2) & 0xf;
 }
 
 }  // namespace
