@@ -63,6 +63,18 @@ template <class Primitive>
   return false;
 }
 
+// A copy of the ray, read one double at a time. The caller has just written the ray
+// double by double, and a plain copy reads it 16 bytes at a time: the processor
+// cannot hand a 16-byte read the data of two 8-byte writes still on their way to the
+// cache, so the read waits until they get there, and the work behind it with it.
+// perf put 10% of the s10 render on that wait (docs/02_recursive.md, "Where the time
+// goes"). `volatile` keeps the compiler from merging the reads.
+Ray copy_double_by_double(const Ray& ray) {
+  const volatile Ray& from = ray;
+  return Ray{vec3(from.origin.x, from.origin.y, from.origin.z),
+             vec3(from.direction.x, from.direction.y, from.direction.z), from.t_min, from.t_max};
+}
+
 }  // namespace
 
 std::string name(Acceleration acceleration) {
@@ -104,14 +116,15 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
 // increments per ray, and no branch in the inner loops. Not inlined into the tracer:
 // built into its recursive trace() the three methods' loops made a stack frame so
 // large that the whole tracer ran 5% slower.
-[[gnu::noinline]] std::optional<Hit> closest_hit(const World& world, Ray ray, TraversalCounts* counts) {
+[[gnu::noinline]] std::optional<Hit> closest_hit(const World& world, const Ray& query, TraversalCounts* counts) {
   const Scene& scene = world.scene;
+  Ray ray = copy_double_by_double(query);  // each hit shortens this copy
   TraversalCounts local;
   std::optional<Hit> nearest;
   switch (world.acceleration) {
     case Acceleration::BruteForce:
       closest_sphere(world.packed, scene.spheres, ray, nearest);
-      local.primitive_tests += scene.spheres.size();  // every sphere is tested, two at a time
+      local.primitive_tests += scene.spheres.size();  // every sphere is tested, four at a time
       closest_in(scene.quads, ray, nearest, local);
       closest_in(scene.triangles, ray, nearest, local);
       break;

@@ -46,7 +46,7 @@ World make_world(Scene scene, Acceleration acceleration = Acceleration::Bvh, con
 // acceleration, the hit brute force finds, up to which of two
 // surfaces at exactly the same t is reported. `counts`, when given, is added to
 // (FastBvh counts only the planes' tests: its walk counts nothing).
-std::optional<Hit> closest_hit(const World& world, Ray ray, TraversalCounts* counts = nullptr);
+std::optional<Hit> closest_hit(const World& world, const Ray& ray, TraversalCounts* counts = nullptr);
 
 // Shadow-ray query: is anything hit with t in [t_min, t_max]? Stops at the first hit.
 bool any_hit(const World& world, const Ray& ray, TraversalCounts* counts = nullptr);
