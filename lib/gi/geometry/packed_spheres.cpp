@@ -34,9 +34,13 @@ struct LanesRay {
 // operations (glm's dot adds x, y, then z), so every lane rounds as the scalar code
 // does; with a NaN every comparison is false there and here alike.
 [[gnu::always_inline]] inline int candidates(const PackedSpheres& s, int k, const LanesRay& r) {
-  const Lanes oc_x = r.ox - s.x[k], oc_y = r.oy - s.y[k], oc_z = r.oz - s.z[k];
+  const PackedSpheres::Group& g = s.groups[static_cast<std::size_t>(k)];
+  Lanes x, y, z, r_squared;  // memcpy: unaligned loads
+  std::memcpy(&x, g.x, sizeof x), std::memcpy(&y, g.y, sizeof y), std::memcpy(&z, g.z, sizeof z);
+  std::memcpy(&r_squared, g.r_squared, sizeof r_squared);
+  const Lanes oc_x = r.ox - x, oc_y = r.oy - y, oc_z = r.oz - z;
   const Lanes h = r.dx * oc_x + r.dy * oc_y + r.dz * oc_z;
-  const Lanes c0 = (oc_x * oc_x + oc_y * oc_y + oc_z * oc_z) - s.r_squared[k];
+  const Lanes c0 = (oc_x * oc_x + oc_y * oc_y + oc_z * oc_z) - r_squared;
   const Lanes zero = {0.0, 0.0, 0.0, 0.0};
   constexpr double m = -4 * std::numeric_limits<double>::epsilon();
   const Lanes minus_4_eps = {m, m, m, m};
@@ -57,12 +61,12 @@ PackedSpheres pack(const std::vector<Sphere>& spheres) {
   PackedSpheres packed;
   packed.count = static_cast<int>(spheres.size());
   for (std::size_t first = 0; first < spheres.size(); first += width) {
-    Lanes x, y, z, r_squared;
+    PackedSpheres::Group g;
     for (std::size_t j = 0; j < width; ++j) {
       const Sphere& s = spheres[first + j < spheres.size() ? first + j : first];
-      x[j] = s.center.x, y[j] = s.center.y, z[j] = s.center.z, r_squared[j] = s.radius * s.radius;
+      g.x[j] = s.center.x, g.y[j] = s.center.y, g.z[j] = s.center.z, g.r_squared[j] = s.radius * s.radius;
     }
-    packed.x.push_back(x), packed.y.push_back(y), packed.z.push_back(z), packed.r_squared.push_back(r_squared);
+    packed.groups.push_back(g);
   }
   return packed;
 }

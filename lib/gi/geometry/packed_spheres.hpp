@@ -24,9 +24,15 @@ namespace gi {
 struct PackedSpheres {
   using Lanes = double __attribute__((vector_size(32)));
   static constexpr int width = 4;
-  std::vector<Lanes> x, y, z;    // centres, by coordinate: spheres 4k .. 4k + 3 in x[k] ...
-  std::vector<Lanes> r_squared;  // radius * radius, as intersect() computes it
-  int count = 0;                 // spheres; the last group's unused lanes repeat its first sphere
+  // Four spheres, coordinate by coordinate. Plain arrays, read into Lanes with
+  // unaligned loads: a std::vector does not promise the 32-byte alignment that
+  // Lanes itself would need.
+  struct Group {
+    double x[width], y[width], z[width];  // centres
+    double r_squared[width];              // radius * radius, as intersect() computes it
+  };
+  std::vector<Group> groups;  // spheres 4k .. 4k + 3 in groups[k]
+  int count = 0;              // spheres; the last group's unused lanes repeat its first sphere
 };
 
 PackedSpheres pack(const std::vector<Sphere>& spheres);
