@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "gi/core/hash.hpp"
 #include "lesson_run.hpp"
 
 namespace {
@@ -255,6 +256,25 @@ TEST(Lessons, SameBytesForAnyThreadCount) {
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_EQ(bytes(out + "/s10_depth_8.png"), one) << threads << " thread(s)";
     EXPECT_EQ(bytes(out + "/s10_depth_8.pfm"), bytes(out_dir("threads1") + "/s10_depth_8.pfm")) << threads;
+  }
+}
+
+// Faster code must not change the picture: these are the FNV-1a hashes of the bytes
+// that main's tracer wrote before the speed work of issue 19 (part 1: brute force
+// four spheres at a time; lesson 02's default became brute force). Every way of
+// finding hits, on one thread and on two, must still give them. A change that means
+// to alter the picture (a new shading term) updates the hashes and says why.
+TEST(Lessons, WhittedS10KeepsItsBytes) {
+  const std::string png = "f6fd2a0a6f0f4ff7", pfm = "e3d19ffda9fa2948";
+  for (const char* accel : {"brute-force", "bvh", "bvh-fast", "bounding-boxes"}) {
+    for (const char* threads : {"1", "2"}) {
+      const std::string out = out_dir(std::string("s10_bytes_") + accel + threads);
+      const LessonRun r = run("02_recursive", std::string("--scene s10 --depth 8 --width 120 --height 90 --repeat 1 "
+                                                          "--accel ") + accel + " --threads " + threads + " --out " + out);
+      ASSERT_EQ(r.status, 0) << r.output;
+      EXPECT_EQ(gi::hex(gi::fnv1a(bytes(out + "/s10_depth_8.png"))), png) << accel << ", " << threads << " thread(s)";
+      EXPECT_EQ(gi::hex(gi::fnv1a(bytes(out + "/s10_depth_8.pfm"))), pfm) << accel << ", " << threads << " thread(s)";
+    }
   }
 }
 

@@ -63,6 +63,18 @@ template <class Primitive>
   return false;
 }
 
+// A copy of the ray, read one double at a time. The caller has just written the ray
+// double by double, and a plain copy reads it 16 bytes at a time: the processor
+// cannot hand a 16-byte read the data of two 8-byte writes still on their way to the
+// cache, so the read waits until they get there, and the work behind it with it.
+// perf put 10% of the s10 render on that wait (docs/02_recursive.md, "Where the time
+// goes"). `volatile` keeps the compiler from merging the reads.
+Ray copy_double_by_double(const Ray& ray) {
+  const volatile Ray& from = ray;
+  return Ray{vec3(from.origin.x, from.origin.y, from.origin.z),
+             vec3(from.direction.x, from.direction.y, from.direction.z), from.t_min, from.t_max};
+}
+
 }  // namespace
 
 std::string name(Acceleration acceleration) {
@@ -87,7 +99,8 @@ Acceleration acceleration_from_name(const std::string& text) {
 }
 
 World make_world(Scene scene, Acceleration acceleration, const BvhSettings& settings) {
-  World world{std::move(scene), acceleration, {}, {}, {}};
+  World world{std::move(scene), acceleration, {}, {}, {}, {}};
+  if (acceleration == Acceleration::BruteForce) world.packed = pack(world.scene.spheres);
   if (acceleration == Acceleration::Bvh) world.bvh = build_bvh(world.scene, settings);
   if (acceleration == Acceleration::FastBvh) world.fast_bvh = make_fast_bvh(build_bvh(world.scene, settings), world.scene);
   if (acceleration == Acceleration::BoundingBoxes) {
@@ -103,13 +116,15 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
 // increments per ray, and no branch in the inner loops. Not inlined into the tracer:
 // built into its recursive trace() the three methods' loops made a stack frame so
 // large that the whole tracer ran 5% slower.
-[[gnu::noinline]] std::optional<Hit> closest_hit(const World& world, Ray ray, TraversalCounts* counts) {
+[[gnu::noinline]] std::optional<Hit> closest_hit(const World& world, const Ray& query, TraversalCounts* counts) {
   const Scene& scene = world.scene;
+  Ray ray = copy_double_by_double(query);  // each hit shortens this copy
   TraversalCounts local;
   std::optional<Hit> nearest;
   switch (world.acceleration) {
     case Acceleration::BruteForce:
-      closest_in(scene.spheres, ray, nearest, local);
+      closest_sphere(world.packed, scene.spheres, ray, nearest);
+      local.primitive_tests += scene.spheres.size();  // every sphere is tested, four at a time
       closest_in(scene.quads, ray, nearest, local);
       closest_in(scene.triangles, ray, nearest, local);
       break;
@@ -138,9 +153,13 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
   TraversalCounts local;
   bool hit = false;
   switch (world.acceleration) {
-    case Acceleration::BruteForce:
-      hit = any_in(scene.spheres, ray, local) || any_in(scene.quads, ray, local) || any_in(scene.triangles, ray, local);
+    case Acceleration::BruteForce: {
+      const int blocker = any_sphere(world.packed, scene.spheres, ray);
+      // Counted as the plain loop counts: up to and including the first sphere hit.
+      local.primitive_tests += blocker >= 0 ? blocker + 1 : scene.spheres.size();
+      hit = blocker >= 0 || any_in(scene.quads, ray, local) || any_in(scene.triangles, ray, local);
       break;
+    }
     case Acceleration::BoundingBoxes: {
       const vec3 inv_dir = 1.0 / ray.direction;
       hit = any_in_boxes(scene.spheres, world.boxes.data(), ray, inv_dir, local) ||

@@ -6,11 +6,13 @@
 #include "gi/accel/bvh.hpp"
 #include "gi/accel/bvh_fast.hpp"
 #include "gi/accel/traversal_counts.hpp"
+#include "gi/geometry/packed_spheres.hpp"
 
 namespace gi {
 
 // The lecture's three ways to find what a ray hits, fastest last:
-//   BruteForce     test the ray against every primitive: N tests per ray
+//   BruteForce     test the ray against every primitive: N tests per ray (the spheres
+//                  two at a time, packed_spheres.hpp)
 //   BoundingBoxes  a box around each object, tested first; the object itself only
 //                  when its box is hit. Still N tests, but a box test is cheaper than
 //                  most objects' own
@@ -33,6 +35,7 @@ struct World {
   Bvh bvh;                  // Acceleration::Bvh only
   FastBvh fast_bvh;         // Acceleration::FastBvh only
   std::vector<Aabb> boxes;  // Acceleration::BoundingBoxes only: the spheres' boxes, then the quads'
+  PackedSpheres packed;     // Acceleration::BruteForce only: the spheres, coordinate by coordinate
 };
 
 // Takes the scene and builds what the acceleration needs: the tree (with `settings`)
@@ -43,7 +46,7 @@ World make_world(Scene scene, Acceleration acceleration = Acceleration::Bvh, con
 // acceleration, the hit brute force finds, up to which of two
 // surfaces at exactly the same t is reported. `counts`, when given, is added to
 // (FastBvh counts only the planes' tests: its walk counts nothing).
-std::optional<Hit> closest_hit(const World& world, Ray ray, TraversalCounts* counts = nullptr);
+std::optional<Hit> closest_hit(const World& world, const Ray& ray, TraversalCounts* counts = nullptr);
 
 // Shadow-ray query: is anything hit with t in [t_min, t_max]? Stops at the first hit.
 bool any_hit(const World& world, const Ray& ray, TraversalCounts* counts = nullptr);
