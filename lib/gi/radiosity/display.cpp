@@ -8,26 +8,6 @@
 
 namespace gi {
 
-namespace {
-
-// (s, t) with bilinear(c, s, t) = p for a point p of a flat convex quadrilateral, by
-// Newton's method from the middle: the map is nearly affine, three steps suffice.
-vec2 unbilinear(const std::array<vec3, 4>& c, const vec3& n, const vec3& p) {
-  vec2 st(0.5, 0.5);
-  for (int step = 0; step < 4; ++step) {
-    const vec3 r = bilinear(c, st.x, st.y) - p;
-    const vec3 ds = (1 - st.y) * (c[1] - c[0]) + st.y * (c[2] - c[3]);
-    const vec3 dt = (1 - st.x) * (c[3] - c[0]) + st.x * (c[2] - c[1]);
-    // Solve [ds dt] (delta) = r in the plane: Cramer with the normal.
-    const double det = dot(cross(ds, dt), n);
-    if (std::abs(det) < 1e-300) break;
-    st -= vec2(dot(cross(r, dt), n), dot(cross(ds, r), n)) / det;
-  }
-  return glm::clamp(st, 0.0, 1.0);
-}
-
-}  // namespace
-
 Image render_radiosity(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
                        const Camera& camera, const DisplaySettings& settings) {
   return render_radiosity_picture(scene, mesh, B, camera, settings).shown;
@@ -40,12 +20,21 @@ std::string describe_pixel_samples(const DisplaySettings& settings) {
 
 RadiosityPicture render_radiosity_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
                                           const Camera& camera, const DisplaySettings& settings) {
+  if (B.size() != mesh.elements.size()) throw std::invalid_argument("radiosity display: one B per element");
+  return render_radiosity_picture(scene, mesh, B,
+                                  settings.shading == Shading::Smooth ? vertex_radiosity(mesh, B) : std::vector<Color>(),
+                                  camera, settings);
+}
+
+RadiosityPicture render_radiosity_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
+                                          const std::vector<Color>& vertex_B, const Camera& camera,
+                                          const DisplaySettings& settings) {
   if (B.size() != mesh.elements.size() || scene.polygons().size() != mesh.elements.size())
     throw std::invalid_argument("radiosity display: one B per element, and a scene of the mesh's elements");
+  if (settings.shading == Shading::Smooth && vertex_B.size() != mesh.vertices.size())
+    throw std::invalid_argument("radiosity display: smooth shading needs one radiosity per vertex");
   if (settings.samples < 1 || settings.samples > 16) throw std::invalid_argument("display: samples must lie in [1, 16]");
   const CameraFrame frame = camera_frame(camera, settings.width, settings.height);
-  const std::vector<Color> vertex_B =
-      settings.shading == Shading::Smooth ? vertex_radiosity(mesh, B) : std::vector<Color>();
   RadiosityPicture picture{Image(settings.width, settings.height), Image(settings.width, settings.height)};
   const int n = settings.samples;
   parallel_for(settings.height, settings.threads, [&](int y) {

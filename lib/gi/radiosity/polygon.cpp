@@ -90,4 +90,18 @@ vec3 bilinear(const std::array<vec3, 4>& c, double s, double t) {
   return (1 - s) * (1 - t) * c[0] + s * (1 - t) * c[1] + s * t * c[2] + (1 - s) * t * c[3];
 }
 
+vec2 unbilinear(const std::array<vec3, 4>& c, const vec3& n, const vec3& p) {
+  vec2 st(0.5, 0.5);
+  for (int step = 0; step < 4; ++step) {
+    const vec3 r = bilinear(c, st.x, st.y) - p;
+    const vec3 ds = (1 - st.y) * (c[1] - c[0]) + st.y * (c[2] - c[3]);
+    const vec3 dt = (1 - st.x) * (c[3] - c[0]) + st.x * (c[2] - c[1]);
+    // Solve [ds dt] (delta) = r in the plane: Cramer with the normal.
+    const double det = dot(cross(ds, dt), n);
+    if (std::abs(det) < 1e-300) break;
+    st -= vec2(dot(cross(r, dt), n), dot(cross(ds, r), n)) / det;
+  }
+  return glm::clamp(st, 0.0, 1.0);
+}
+
 }  // namespace gi

@@ -1,0 +1,79 @@
+#include "gi/radiosity/hierarchical/hierarchy.hpp"
+
+#include <stdexcept>
+
+namespace gi {
+
+Hierarchy make_hierarchy(const std::vector<Surface>& surfaces) {
+  // One element per surface: make_mesh checks the surfaces and their overlaps.
+  const Mesh mesh = make_mesh(surfaces, {1e300, 1});
+  Hierarchy h;
+  h.surfaces = surfaces;
+  for (std::size_t s = 0; s < surfaces.size(); ++s) {
+    Node root;
+    root.shape = mesh.elements[s].shape;
+    root.surface = static_cast<int>(s);
+    root.rho = surfaces[s].reflectance;
+    root.E = root.B = surfaces[s].emission;
+    h.nodes.push_back(root);
+    h.total_area += root.shape.area;
+    h.largest_emission = std::max(h.largest_emission, max_component(root.E));
+  }
+  return h;
+}
+
+vec3 node_point(const Hierarchy& h, const Node& node, double u, double v) {
+  const double scale = 1.0 / static_cast<double>(1LL << node.level);
+  return bilinear(h.surfaces[node.surface].corners, (node.i + u) * scale, (node.j + v) * scale);
+}
+
+void split(Hierarchy& h, int index) {
+  if (!h.nodes[index].leaf()) throw std::invalid_argument("hierarchy: node " + std::to_string(index) + " is split already");
+  const int first = static_cast<int>(h.nodes.size());
+  for (int k = 0; k < 4; ++k) {
+    const Node& parent = h.nodes[index];
+    Node child;
+    child.surface = parent.surface;
+    child.level = parent.level + 1;
+    child.i = 2 * parent.i + (k & 1);
+    child.j = 2 * parent.j + (k >> 1);
+    child.parent = index;
+    child.rho = parent.rho, child.E = parent.E, child.B = parent.B;
+    const double scale = 1.0 / static_cast<double>(1LL << child.level);
+    const std::array<vec3, 4>& c = h.surfaces[child.surface].corners;
+    const double s0 = child.i * scale, s1 = (child.i + 1) * scale, t0 = child.j * scale, t1 = (child.j + 1) * scale;
+    child.shape = make_polygon({bilinear(c, s0, t0), bilinear(c, s1, t0), bilinear(c, s1, t1), bilinear(c, s0, t1)});
+    h.nodes.push_back(std::move(child));  // may move the nodes: `parent` is looked up again each time
+  }
+  for (int k = 0; k < 4; ++k) h.nodes[index].children[k] = first + k;
+}
+
+std::vector<int> leaves(const Hierarchy& h) {
+  std::vector<int> out, stack;
+  for (int root = static_cast<int>(h.surfaces.size()) - 1; root >= 0; --root) stack.push_back(root);
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    const Node& node = h.nodes[n];
+    if (node.leaf()) {
+      out.push_back(n);
+      continue;
+    }
+    for (int k = 3; k >= 0; --k) stack.push_back(node.children[k]);
+  }
+  return out;
+}
+
+std::size_t link_count(const Hierarchy& h) {
+  std::size_t n = 0;
+  for (const Node& node : h.nodes) n += node.links.size();
+  return n;
+}
+
+std::size_t link_bytes(const Hierarchy& h) {
+  std::size_t n = 0;
+  for (const Node& node : h.nodes) n += node.links.capacity() * sizeof(Link);
+  return n;
+}
+
+}  // namespace gi

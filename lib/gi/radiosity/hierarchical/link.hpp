@@ -1,0 +1,18 @@
+#pragma once
+
+namespace gi {
+
+// A link carries light from one node of the hierarchy (its source q) to another
+// (its receiver p), at the level the refinement oracle accepted (oracle.hpp). The
+// receiver gathers over its links:
+//   gathered_p = rho_p * sum over links of F_pq * V_pq * B_q
+// As in Hanrahan, Salzman and Aupperle's algorithm, and RenderPark's Interaction, a
+// link is a record stored with its receiver (Node::links).
+struct Link {
+  int receiver = -1, source = -1;  // node indices
+  double F = 0;           // F_pq, receiver to source, with nothing in between (analytic, link_estimate.hpp)
+  double F_back = 0;      // F_qp, source to receiver: the oracle's second estimate
+  double visibility = 0;  // V_pq in [0, 1]: the fraction of shadow rays between them that get through
+};
+
+}  // namespace gi
