@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "gi/raytrace/optics.hpp"
+#include "support/print.hpp"
 
 TEST(Ex2_3_Fresnel, NormalIncidence) {
   EXPECT_NEAR(gi::fresnel_dielectric(1.0, 1.0, 1.5), 0.04, 1e-9) << "at 0 degrees F = ((n1 - n2) / (n1 + n2))^2 = 0.04";

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "gi/raytrace/shading.hpp"
+#include "support/print.hpp"
 
 using gi::Color;
 using gi::vec3;
@@ -36,7 +37,7 @@ TEST(Ex2_4_Phong, UsesTheTexturedDiffuseColour) {
   m.specular = Color(0);
   const Color c = gi::phong(m, Color(1, 0, 0), n, n, n, Color(1));
   EXPECT_NEAR(c.x, 1.0, 1e-9) << "use the kd argument (the colour after texturing), not material.diffuse";
-  EXPECT_NEAR(c.y, 0.0, 1e-9);
+  EXPECT_NEAR(c.y, 0.0, 1e-9) << "kd = (1, 0, 0) has no green: use the kd argument";
 }
 
 TEST(Ex2_4_Phong, HighlightAtTheMirrorDirection) {
@@ -56,6 +57,17 @@ TEST(Ex2_4_Phong, HighlightFallsOffAsCosineToTheShininess) {
   EXPECT_NEAR(c.x, expected, 1e-9) << (std::abs(c.x - blinn) < 1e-6
                                            ? "that is Blinn-Phong (N.H)^n; the lecture's Phong model uses (R.V)^n"
                                            : "k_s (R.V)^n with R the reflection of L about N");
+}
+
+TEST(Ex2_4_Phong, TheLightsIntensityScalesBothTerms) {
+  const gi::Material m = plastic();
+  const Color intensity(2.0, 1.0, 0.5);
+  const Color c = gi::phong(m, m.diffuse, n, at_angle(-40), at_angle(40), intensity);
+  const double cos40 = std::cos(40 * gi::pi / 180);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(c[k], intensity[k] * (m.diffuse[k] * cos40 + 0.3), 1e-9)
+        << "channel " << k << ": I_l [k_d (N.L) + k_s (R.V)^n] -- the light's intensity multiplies the diffuse "
+        << "term and the highlight alike, channel by channel";
 }
 
 TEST(Ex2_4_Phong, NoHighlightWhenRDotVIsNegative) {

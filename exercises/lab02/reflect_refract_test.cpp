@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "gi/raytrace/optics.hpp"
+#include "support/print.hpp"
 
 using gi::vec3;
 
@@ -38,7 +39,7 @@ TEST(Ex2_1_Reflect, KeepsLengthAndAngle) {
 
 TEST(Ex2_2_Refract, NormalIncidencePassesStraightThrough) {
   const auto t = gi::refract(vec3(0, -1, 0), up, 1.0 / 1.5);
-  ASSERT_TRUE(t);
+  ASSERT_TRUE(t) << "straight into glass there is no total internal reflection: return the direction";
   EXPECT_NEAR(gi::length(*t - vec3(0, -1, 0)), 0, 1e-12)
       << (t->y > 0 ? "the transmitted ray turned back: check the sign of the (eta cos_i - cos_t) n term"
                    : "at normal incidence the ray is not bent");

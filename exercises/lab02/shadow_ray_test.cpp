@@ -5,6 +5,7 @@
 
 #include "gi/core/rng.hpp"
 #include "gi/raytrace/shading.hpp"
+#include "support/print.hpp"
 
 using gi::vec3;
 

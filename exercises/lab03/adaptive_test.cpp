@@ -5,6 +5,7 @@
 
 #include "gi/raytrace/adaptive.hpp"
 #include "gi/raytrace/pixel_samplers.hpp"
+#include "support/print.hpp"
 
 using gi::Color;
 
@@ -35,17 +36,28 @@ TEST(Ex3_2_Adaptive, ADarkerCornerCountsToo) {
 }
 
 TEST(Ex3_2_Adaptive, EveryColourChannelCounts) {
-  EXPECT_TRUE(gi::should_subdivide({Color(0.2, 0.2, 0.0), Color(0.2, 0.2, 1.0), Color(0.2, 0.2, 0.0),
-                                    Color(0.2, 0.2, 1.0)},
+  // Blue alone changes: the mean is 0.15 in blue, every corner 0.15 away from it.
+  EXPECT_TRUE(gi::should_subdivide({Color(0.2, 0.2, 0.0), Color(0.2, 0.2, 0.3), Color(0.2, 0.2, 0.0),
+                                    Color(0.2, 0.2, 0.3)},
                                    0.1))
-      << "the corners differ in blue only (a red-green edge in a blue world): check every channel";
+      << "the corners differ by 0.15 from their mean in blue only (a red-green edge in a blue world): compare "
+         "every channel on its own. Averaging the channels (or taking the luminance) first shrinks the "
+         "difference below the threshold";
+}
+
+TEST(Ex3_2_Adaptive, ChannelsAreNotAddedUp) {
+  // Every channel 0.06 from its mean: below 0.1 in each, though 0.18 summed.
+  EXPECT_FALSE(gi::should_subdivide({Color(0.0), Color(0.12), Color(0.0), Color(0.12)}, 0.1))
+      << "each channel is 0.06 from its mean, below the threshold 0.1: no split. Take the largest channel's "
+         "difference, not the sum over channels";
 }
 
 TEST(Ex3_2_Adaptive, TheThresholdIsStrict) {
   // Mean 0.5, every corner exactly 0.5 away: representable, so no round-off.
   EXPECT_FALSE(gi::should_subdivide({Color(0.0), Color(1.0), Color(0.0), Color(1.0)}, 0.5))
       << "subdivide when the difference is MORE than the threshold, not equal to it";
-  EXPECT_TRUE(gi::should_subdivide({Color(0.0), Color(1.0), Color(0.0), Color(1.0)}, 0.49));
+  EXPECT_TRUE(gi::should_subdivide({Color(0.0), Color(1.0), Color(0.0), Color(1.0)}, 0.49))
+      << "every corner is 0.5 from the mean, more than 0.49: split";
 }
 
 TEST(Ex3_2_Adaptive, CompareWithTheMeanNotTheFirstCorner) {
@@ -61,5 +73,5 @@ TEST(Ex3_2_Adaptive, DrivesTheAdaptiveSamplerOnAnEdge) {
   const auto edge = [](gi::vec2 p) { return Color(p.x >= 0.3 ? 1.0 : 0.0); };
   const gi::AdaptiveSample a = gi::adaptive_sample(edge, 0.1, 2);
   EXPECT_EQ(a.samples, 19) << "4 corners + 5 (pixel) + 5 + 5 (the two quarters the edge crosses)";
-  EXPECT_NEAR(a.colour.x, 0.625, 1e-12);
+  EXPECT_NEAR(a.colour.x, 0.625, 1e-12) << "the estimate of a pixel 70% white, from 19 samples, is 0.625";
 }

@@ -8,6 +8,7 @@
 
 #include "gi/core/rng.hpp"
 #include "gi/raytrace/pixel_samplers.hpp"
+#include "support/print.hpp"
 
 namespace {
 
@@ -41,8 +42,11 @@ TEST(Ex3_1_Jittered, ExactlyOneSamplePerCell) {
   const int n = 4;
   for (int trial = 0; trial < 50; ++trial) {
     std::vector<int> count(n * n, 0);
-    for (const gi::vec2& p : gi::jittered_positions(n, rng))
+    for (const gi::vec2& p : gi::jittered_positions(n, rng)) {
+      ASSERT_TRUE(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1)
+          << "sample " << testing::PrintToString(p) << " lies outside the pixel's unit square [0, 1)^2";
       ++count[static_cast<int>(p.y * n) * n + static_cast<int>(p.x * n)];
+    }
     for (int c = 0; c < n * n; ++c)
       ASSERT_EQ(count[c], 1) << "cell (" << c % n << ", " << c / n << ") holds " << count[c]
                              << " samples: jittering puts exactly one sample in each of the n x n cells "
@@ -96,7 +100,7 @@ TEST(Ex3_1_Jittered, EveryCallDrawsNewOffsets) {
   gi::Rng rng(13);
   const std::vector<gi::vec2> first = gi::jittered_positions(2, rng);
   const std::vector<gi::vec2> second = gi::jittered_positions(2, rng);
-  ASSERT_EQ(first.size(), second.size());
+  ASSERT_EQ(first.size(), second.size()) << "two calls with the same n must return as many samples";
   int same = 0;
   for (std::size_t k = 0; k < first.size(); ++k) same += first[k] == second[k];
   EXPECT_LT(same, 4) << "two calls gave the same pattern: draw from the rng you are given (a fresh or "

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "gi/raytrace/soft_shadows.hpp"
+#include "support/print.hpp"
 
 using gi::vec2;
 using gi::vec3;

@@ -1,6 +1,9 @@
 // Graded tests of exercise 5.2: BVH traversal, the nearest hit. One point per test.
 // Every scene is made of quads, whose intersection is given, so this lab does not
-// depend on your lab 1 code. It does use your slab test: do exercise 5.1 first.
+// depend on your lab 1 code. The traversal calls your slab test (exercise 5.1); the
+// scenes use tilted squares (boxes with some thickness) and rays along +z where they
+// can, so that most slips in 5.1 cost points there only. A test that needs more of
+// the slab test checks that first and says so (slab_probe.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +15,8 @@
 #include "gi/accel/world.hpp"
 #include "gi/core/rng.hpp"
 #include "gi/scene/benchmark_scenes.hpp"
+#include "slab_probe.hpp"
+#include "support/print.hpp"
 
 using gi::Quad;
 using gi::Ray;
@@ -30,87 +35,96 @@ gi::World world_of(const std::vector<Quad>& quads, const gi::BvhSettings& settin
   return gi::make_world(scene, gi::Acceleration::Bvh, settings);
 }
 
-// A square of side `size`, centred on the z axis at depth z, facing +z.
-Quad square(double z, double size = 2) { return Quad{{-0.5 * size, -0.5 * size, z}, {size, 0, 0}, {0, size, 0}, 0}; }
+// A square of side `size`, centred on the z axis at depth z, tilted a little about
+// the y axis so that its box is 0.1 thick: a ray along the z axis meets it at z.
+Quad square(double z, double size = 2) {
+  return Quad{{-0.5 * size, -0.5 * size, z - 0.05}, {size, 0, 0.1}, {0, size, 0}, 0};
+}
 
 const gi::BvhSettings one_per_leaf{1, 12, gi::Split::Sah};
-const Ray down_the_z_axis{{0, 0, 0}, {0, 0, -1}};
+const Ray up_the_z_axis{{0, 0, 0}, {0, 0, 1}};
 
-// 1000 squares one behind the other, at z = -1, -2, ..., -1000, one per leaf, and
-// rays down and up the stack, each 1.5 from the first square it meets.
+// 1000 squares one above the other at z = 1, 2, ..., 1000, one per leaf.
 gi::World stack_of_squares() {
   std::vector<Quad> quads;
-  for (int i = 1; i <= 1000; ++i) quads.push_back(square(-i));
+  for (int i = 1; i <= 1000; ++i) quads.push_back(square(i));
   return world_of(quads, one_per_leaf);
 }
-const Ray both_ways[] = {{{0, 0, 0.5}, {0, 0, -1}}, {{0, 0, -1001.5}, {0, 0, 1}}};
 
 }  // namespace
 
 TEST(Ex5_2_BvhTraversal, FindsTheQuadInFrontAndMissesWhenNothingIsThere) {
-  const gi::World world = world_of({square(-3), square(-7)}, one_per_leaf);
-  const auto hit = gi::closest_hit(world, down_the_z_axis);
-  ASSERT_TRUE(hit) << "the ray runs down the z axis through two squares";
-  EXPECT_NEAR(hit->t, 3.0, 1e-12) << "the square at z = -3 is the nearer one";
-  EXPECT_FALSE(gi::closest_hit(world, Ray{{0, 0, 0}, {0, 0, 1}})) << "nothing lies in +z: return std::nullopt";
-  EXPECT_FALSE(gi::closest_hit(world, Ray{{5, 0, 0}, {0, 0, -1}})) << "this ray passes beside both squares";
+  NEEDS_SLAB_TEST(0);
+  const gi::World world = world_of({square(3), square(7)}, one_per_leaf);
+  const auto hit = gi::closest_hit(world, up_the_z_axis);
+  ASSERT_TRUE(hit) << "the ray runs up the z axis through two squares";
+  EXPECT_NEAR(hit->t, 3.0, 1e-12) << "the square at z = 3 is the nearer one";
+  EXPECT_FALSE(gi::closest_hit(world, Ray{{0, 0, 10}, {0, 0, 1}})) << "nothing lies above z = 10: return std::nullopt";
+  EXPECT_FALSE(gi::closest_hit(world, Ray{{5, 0, 0}, {0, 0, 1}})) << "this ray passes beside both squares";
 }
 
 TEST(Ex5_2_BvhTraversal, NearestHitWithinALeaf) {
+  NEEDS_SLAB_TEST(0);
   // Both squares in one leaf (a median split makes no cut below max_leaf_size), in
   // either order.
   const gi::BvhSettings one_leaf{4, 12, gi::Split::Median};
-  const auto far_first = gi::closest_hit(world_of({square(-8), square(-3)}, one_leaf), down_the_z_axis);
-  ASSERT_TRUE(far_first);
+  const auto far_first = gi::closest_hit(world_of({square(8), square(3)}, one_leaf), up_the_z_axis);
+  ASSERT_TRUE(far_first) << "the ray runs up the z axis through two squares in one leaf";
   EXPECT_NEAR(far_first->t, 3.0, 1e-12) << "the leaf lists the square at t = 8 first and the one at t = 3 second: "
                                            "the first hit found is not the nearest; test every primitive of a leaf";
   EXPECT_EQ(far_first->material, 1) << "the Hit returned must be the nearest quad's";
-  const auto near_first = gi::closest_hit(world_of({square(-3), square(-8)}, one_leaf), down_the_z_axis);
-  ASSERT_TRUE(near_first);
+  const auto near_first = gi::closest_hit(world_of({square(3), square(8)}, one_leaf), up_the_z_axis);
+  ASSERT_TRUE(near_first) << "the ray runs up the z axis through two squares in one leaf";
   EXPECT_NEAR(near_first->t, 3.0, 1e-12) << "a later, farther hit replaced the nearer one: after each hit set "
                                             "ray.t_max = hit->t, so that only nearer hits are found afterwards";
 }
 
 TEST(Ex5_2_BvhTraversal, NearestHitAcrossOverlappingBoxes) {
-  // A long slanted quad whose box reaches from z = -1 to z = -20, hit at t = 10.5,
-  // and a small square at z = -5 inside that box's extent.
-  const Quad slanted{{-1, -1, -1}, {2, 0, 0}, {0, 2, -19}, 0};
-  const gi::World world = world_of({slanted, square(-5, 1)}, one_per_leaf);
-  const auto hit = gi::closest_hit(world, down_the_z_axis);
-  ASSERT_TRUE(hit);
+  NEEDS_SLAB_TEST(0);
+  // A long slanted quad whose box reaches from z = 1 to z = 20, hit at t = 10.5, and
+  // a small square at z = 5 inside that box's extent.
+  const Quad slanted{{-1, -1, 1}, {2, 0, 0}, {0, 2, 19}, 0};
+  const gi::World world = world_of({slanted, square(5, 1)}, one_per_leaf);
+  const auto hit = gi::closest_hit(world, up_the_z_axis);
+  ASSERT_TRUE(hit) << "the ray up the z axis meets both quads";
   EXPECT_NEAR(hit->t, 5.0, 1e-12)
       << "the ray enters the slanted quad's box first (t = 1), and finds that quad at t = 10.5; but the other "
-         "box, entered at t = 5 < 10.5, holds a nearer square. Boxes overlap: after a hit keep visiting every "
+         "box, entered at t = 4.95 < 10.5, holds a nearer square. Boxes overlap: after a hit keep visiting every "
          "box the ray enters before the nearest hit so far";
 }
 
 TEST(Ex5_2_BvhTraversal, VisitsTheFartherBoxWhenTheNearerHoldsNoHit) {
-  // A thin diagonal strip at z = -2: its box spans [-1, 1.1] x [-1.1, 1], but the
-  // strip itself stays near the line x = y. Behind it, a large square at z = -6.
-  const Quad strip{{-1, -1, -2}, {2, 2, 0}, {0.1, -0.1, 0}, 0};
-  const gi::World world = world_of({strip, square(-6, 4)}, one_per_leaf);
-  const auto hit = gi::closest_hit(world, Ray{{0.5, -0.5, 0}, {0, 0, -1}});
-  ASSERT_TRUE(hit) << "the ray enters the strip's box at t = 2 but misses the strip; the square behind, whose box it "
+  NEEDS_SLAB_TEST(0);
+  // A thin diagonal strip at z = 2: its box spans [-1, 1.1] x [-1.1, 1], but the
+  // strip itself stays near the line x = y. Above it, a large square at z = 6.
+  const Quad strip{{-1, -1, 1.95}, {2, 2, 0.1}, {0.1, -0.1, 0}, 0};
+  const gi::World world = world_of({strip, square(6, 4)}, one_per_leaf);
+  const auto hit = gi::closest_hit(world, Ray{{0.5, -0.5, 0}, {0, 0, 1}});
+  ASSERT_TRUE(hit) << "the ray enters the strip's box at t = 2 but misses the strip; the square beyond, whose box it "
                       "enters at t = 6, must still be visited: keep the farther child on the stack";
-  EXPECT_NEAR(hit->t, 6.0, 1e-12);
+  EXPECT_NEAR(hit->t, 6.0125, 1e-12) << "the tilted square is at z = 6.0125 where the ray meets it";
 }
 
 TEST(Ex5_2_BvhTraversal, RespectsTheRaysInterval) {
-  const gi::World world = world_of({square(-3), square(-7)}, one_per_leaf);
-  EXPECT_FALSE(gi::closest_hit(world, Ray{{0, 0, 0}, {0, 0, -1}, 0, 2.5}))
+  NEEDS_SLAB_TEST(0);
+  const gi::World world = world_of({square(3), square(7)}, one_per_leaf);
+  EXPECT_FALSE(gi::closest_hit(world, Ray{{0, 0, 0}, {0, 0, 1}, 0, 2.5}))
       << "t_max = 2.5 ends the ray before the first square (t = 3): start from the ray's own t_max";
-  const auto hit = gi::closest_hit(world, Ray{{0, 0, 0}, {0, 0, -1}, 4, 100});
+  const auto hit = gi::closest_hit(world, Ray{{0, 0, 0}, {0, 0, 1}, 4, 100});
   ASSERT_TRUE(hit) << "with t_min = 4 the ray starts past the first square and hits the second";
-  EXPECT_NEAR(hit->t, 7.0, 1e-12);
+  EXPECT_NEAR(hit->t, 7.0, 1e-12) << "the second square is at t = 7";
 }
 
 TEST(Ex5_2_BvhTraversal, CountsItsWork) {
-  // Two squares side by side, one leaf each; the ray hits the left one only.
-  const gi::World world = world_of({Quad{{-3, -1, -4}, {2, 0, 0}, {0, 2, 0}, 0},
-                                    Quad{{1, -1, -4}, {2, 0, 0}, {0, 2, 0}, 0}}, one_per_leaf);
+  NEEDS_SLAB_TEST(0);
+  // Two squares side by side at z = 4, one leaf each; the ray hits the left one only.
+  Quad left = square(4), right = square(4);
+  left.corner.x -= 2, right.corner.x += 2;
+  const gi::World world = world_of({left, right}, one_per_leaf);
   gi::TraversalCounts counts;
-  ASSERT_TRUE(gi::closest_hit(world, Ray{{-2, 0, 0}, {0, 0, -1}}, &counts));
-  EXPECT_GE(counts.box_tests, 2u) << "count every slab test in counts.box_tests (the root and its two children)";
+  ASSERT_TRUE(gi::closest_hit(world, Ray{{-2, 0, 0}, {0, 0, 1}}, &counts)) << "the ray hits the left square";
+  EXPECT_GE(counts.box_tests, 3u) << "count every slab test in counts.box_tests: the root's box and both its "
+                                     "children's, three at least";
   EXPECT_GE(counts.nodes_visited, 2u) << "count every node you look into in counts.nodes_visited (the root and the "
                                          "leaf that was hit)";
   EXPECT_LE(counts.nodes_visited, 3u) << "only the root and the one leaf whose box the ray enters need a visit";
@@ -118,35 +132,47 @@ TEST(Ex5_2_BvhTraversal, CountsItsWork) {
                                            "square's box is missed, so only the left square is tested";
 }
 
+TEST(Ex5_2_BvhTraversal, SkipsABoxEnteredBeyondTheNearestHit) {
+  NEEDS_SLAB_TEST(1);
+  // Two squares, one per leaf, at z = 1 and z = 5: the ray enters both boxes, visits
+  // the nearer first and hits its square at t = 1. The other box is entered at 4.95.
+  const gi::World world = world_of({square(1), square(5)}, one_per_leaf);
+  gi::TraversalCounts counts;
+  const auto hit = gi::closest_hit(world, up_the_z_axis, &counts);
+  ASSERT_TRUE(hit) << "the ray up the z axis meets both squares";
+  EXPECT_NEAR(hit->t, 1.0, 1e-12) << "the nearer square is at t = 1";
+  EXPECT_EQ(counts.primitive_tests, 1u)
+      << "after the hit at t = 1 the other leaf, whose box the ray enters at t = 4.95 > ray.t_max, holds nothing "
+         "nearer: when you take a node off the stack, skip it if the t_enter stored with it is beyond ray.t_max "
+         "(store each child with its own t_enter)";
+  EXPECT_EQ(counts.nodes_visited, 2u) << "the root and the nearer leaf: the farther leaf is skipped unopened";
+}
+
 TEST(Ex5_2_BvhTraversal, ShrinkingTMaxSkipsEverythingBehindTheHit) {
-  // Down the stack and up it: a traversal that always takes the same child first
-  // goes the right way round at least once.
+  NEEDS_SLAB_TEST(1);
   const gi::World world = stack_of_squares();
-  std::uint64_t fewest = 1000;
-  for (const Ray& ray : both_ways) {
-    gi::TraversalCounts counts;
-    const auto hit = gi::closest_hit(world, ray, &counts);
-    ASSERT_TRUE(hit);
-    EXPECT_NEAR(hit->t, 1.5, 1e-12);
-    ASSERT_GT(counts.primitive_tests, 0u) << "count primitive tests in counts.primitive_tests";
-    fewest = std::min(fewest, counts.primitive_tests);
-  }
-  EXPECT_LE(fewest, 4u) << "1000 squares one behind the other, and the traversal tested " << fewest << " of them. "
-                        << "Once the first is hit at t = 1.5, every other box is entered beyond it and must be "
-                        << "skipped unopened: set ray.t_max = hit->t at each hit, and skip a box taken off the "
-                        << "stack if the ray enters it beyond ray.t_max";
+  gi::TraversalCounts counts;
+  const auto hit = gi::closest_hit(world, Ray{{0, 0, -0.5}, {0, 0, 1}}, &counts);
+  ASSERT_TRUE(hit) << "the ray up the stack meets all 1000 squares";
+  EXPECT_NEAR(hit->t, 1.5, 1e-12) << "the first square is at z = 1, 1.5 from the ray's origin";
+  EXPECT_LE(counts.primitive_tests, 2u)
+      << "1000 squares one above the other, and the traversal tested " << counts.primitive_tests << " of them. "
+      << "Once the first is hit at t = 1.5, every other box is entered beyond it and must be skipped unopened: set "
+      << "ray.t_max = hit->t at each hit, and skip a box taken off the stack if the ray enters it beyond ray.t_max";
 }
 
 TEST(Ex5_2_BvhTraversal, VisitsTheNearerChildFirst) {
+  NEEDS_SLAB_TEST(2);
+  // Up the stack and down it: a traversal that always takes the same child first
+  // goes the wrong way round in one of them.
   const gi::World world = stack_of_squares();
-  for (const Ray& ray : both_ways) {
+  for (const Ray& ray : {Ray{{0, 0, -0.5}, {0, 0, 1}}, Ray{{0, 0, 1001.5}, {0, 0, -1}}}) {
     gi::TraversalCounts counts;
     const auto hit = gi::closest_hit(world, ray, &counts);
-    ASSERT_TRUE(hit);
-    EXPECT_NEAR(hit->t, 1.5, 1e-12);
-    ASSERT_GT(counts.primitive_tests, 0u) << "count primitive tests in counts.primitive_tests";
+    ASSERT_TRUE(hit) << "the ray along the stack meets all 1000 squares";
+    EXPECT_NEAR(hit->t, 1.5, 1e-12) << "the first square is 1.5 from the ray's origin";
     EXPECT_LE(counts.primitive_tests, 4u)
-        << "going " << (ray.direction.z < 0 ? "down" : "up") << " the stack of 1000 squares the traversal tested "
+        << "going " << (ray.direction.z > 0 ? "up" : "down") << " the stack of 1000 squares the traversal tested "
         << counts.primitive_tests << " of them. Of two children whose boxes the ray enters, visit first the one "
         << "it enters first (the smaller t_enter), whichever is left or right; the other way round the squares "
         << "are found back to front, each nearer than the last";
@@ -154,6 +180,7 @@ TEST(Ex5_2_BvhTraversal, VisitsTheNearerChildFirst) {
 }
 
 TEST(Ex5_2_BvhTraversal, AgreesWithBruteForceOnRandomRays) {
+  NEEDS_SLAB_TEST(3);
   const gi::Scene room = gi::quad_room(1500);
   const gi::World brute = gi::make_world(room, gi::Acceleration::BruteForce);
   const gi::World bvh = gi::make_world(room, gi::Acceleration::Bvh);
@@ -164,7 +191,9 @@ TEST(Ex5_2_BvhTraversal, AgreesWithBruteForceOnRandomRays) {
                   {s * std::cos(phi), s * std::sin(phi), z}};
     const auto expected = gi::closest_hit(brute, ray);
     const auto hit = gi::closest_hit(bvh, ray);
-    ASSERT_EQ(hit.has_value(), expected.has_value()) << "ray " << i << " from the inside of a closed room must hit";
+    ASSERT_TRUE(expected) << "ray " << i << " starts inside a closed room: testing every quad finds a hit";
+    ASSERT_TRUE(hit) << "ray " << i << " from inside a closed room must hit; testing every quad finds t = "
+                     << expected->t;
     ASSERT_NEAR(hit->t, expected->t, 1e-9 * expected->t)
         << "ray " << i << ": the BVH found a hit at t = " << hit->t << ", testing every quad finds t = "
         << expected->t << (hit->t > expected->t ? ": not the nearest" : ": nearer than any quad?");

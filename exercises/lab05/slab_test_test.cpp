@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "gi/geometry/aabb.hpp"
+#include "support/print.hpp"
 
 using gi::Aabb;
 using gi::Ray;
@@ -57,7 +58,7 @@ TEST(Ex5_1_SlabTest, RespectsTMax) {
       << "the box starts at t = 4, beyond t_max = 3.5 (a nearer hit is already known): start t_exit at ray.t_max";
   const auto t = slab(Ray{{2, 1.5, -3}, {0, 0, 1}, 0, 4.5});
   ASSERT_TRUE(t) << "t_max = 4.5 reaches into the box, which starts at t = 4";
-  EXPECT_NEAR(*t, 4.0, 1e-12);
+  EXPECT_NEAR(*t, 4.0, 1e-12) << "the ray enters the box at t = 4";
 }
 
 TEST(Ex5_1_SlabTest, RespectsTMin) {
@@ -72,7 +73,7 @@ TEST(Ex5_1_SlabTest, ParallelRayInsideTheSlabHitsOutsideMisses) {
   const auto t = slab(Ray{{0, 1.5, 2}, {1, 0, 0}});
   ASSERT_TRUE(t) << "direction (1, 0, 0) is parallel to the y and z slabs; the origin is inside both, so they do "
                     "not limit t (inv_dir = +inf gives t = -inf and +inf there, which is right)";
-  EXPECT_NEAR(*t, 1.0, 1e-12);
+  EXPECT_NEAR(*t, 1.0, 1e-12) << "the ray enters through x = 1 at t = 1";
   EXPECT_FALSE(slab(Ray{{0, 2.5, 2}, {1, 0, 0}})) << "y = 2.5 is outside 1 <= y <= 2 for every t: a miss";
   EXPECT_FALSE(slab(Ray{{0, 0.5, 2}, {1, -0.0, 0}})) << "direction y = -0.0 gives inv_dir = -inf; the ray is still "
                                                         "parallel, and y = 0.5 is outside the slab";
@@ -97,7 +98,7 @@ TEST(Ex5_1_SlabTest, FlatBoxIsHit) {
   const auto t = slab(Ray{{1, 3, 1}, {0, -1, 0}}, floor_quad);
   ASSERT_TRUE(t) << "the box of an axis-aligned quad is flat: the ray enters and leaves it at the same t. Test "
                     "t_enter > t_exit for a miss, not t_enter >= t_exit";
-  EXPECT_NEAR(*t, 3.0, 1e-12);
+  EXPECT_NEAR(*t, 3.0, 1e-12) << "the flat box lies 3 below the ray's origin";
 }
 
 TEST(Ex5_1_SlabTest, AllThreeSlabsAtOnce) {

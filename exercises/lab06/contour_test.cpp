@@ -1,10 +1,12 @@
 // Graded tests of exercise 6.2: Lambert's contour integral. One point per test.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 #include "gi/radiosity/configuration_factors.hpp"
 #include "gi/radiosity/form_factor_formulas.hpp"
+#include "support/print.hpp"
 
 using gi::vec3;
 
@@ -26,24 +28,62 @@ TEST(Ex6_2_Contour, CornerRectangleMatchesHowell) {
 
 TEST(Ex6_2_Contour, CentredSquareIsFourCorners) {
   const double corner = gi::ff_point_to_parallel_rectangle_corner(1, 1, 2);
-  EXPECT_NEAR(contour({0, 0, 1}, rectangle(-1, 1, -1, 1, 2)), 4 * corner, 1e-12);
+  EXPECT_NEAR(contour({0, 0, 1}, rectangle(-1, 1, -1, 1, 2)), 4 * corner, 1e-12)
+      << "a square centred over the point is four of Howell's corner rectangles";
 }
 
 TEST(Ex6_2_Contour, GammaIsTheAngleBetweenTheVertexVectors) {
   // A thin sliver far off-axis: wrong angles (e.g. not normalising before acos) show here.
   const double a = gi::ff_point_to_parallel_rectangle_corner(3.0, 2.5, 1.0);
   const double b = gi::ff_point_to_parallel_rectangle_corner(2.9, 2.5, 1.0);
-  EXPECT_NEAR(contour({0, 0, 1}, rectangle(2.9, 3.0, 0, 2.5, 1.0)), a - b, 1e-12);
+  EXPECT_NEAR(contour({0, 0, 1}, rectangle(2.9, 3.0, 0, 2.5, 1.0)), a - b, 1e-12)
+      << "gamma_k is the angle between R_k and R_k+1: atan2(|R_k+1 x R_k|, R_k . R_k+1)";
+}
+
+TEST(Ex6_2_Contour, AnglesBeyondNinetyDegrees) {
+  // The strip [-3, 3] x [0.5, 1] at height 1: its long near edge subtends 139 degrees.
+  const double exact = 2 * (gi::ff_point_to_parallel_rectangle_corner(3, 1, 1) -
+                            gi::ff_point_to_parallel_rectangle_corner(3, 0.5, 1));
+  EXPECT_NEAR(contour({0, 0, 1}, rectangle(-3, 3, 0.5, 1, 1)), exact, 1e-12)
+      << "an edge can subtend more than 90 degrees: asin of the sine cannot tell 41 degrees from 139; "
+         "atan2(|R_k+1 x R_k|, R_k . R_k+1) gets every angle in [0, 180]";
+}
+
+TEST(Ex6_2_Contour, SmallPolygonFarAway) {
+  // A 1 cm square 10 m away: F = 3.2e-7. Howell's formula has no cancellation here,
+  // so it is exact to a few units of round-off.
+  const double exact = gi::ff_point_to_parallel_rectangle_corner(0.01, 0.01, 10);
+  EXPECT_NEAR(contour({0, 0, 1}, rectangle(0, 0.01, 0, 0.01, 10)), exact, 1e-12 * exact)
+      << "relative error above 1e-12 on a small, distant polygon: its edges subtend tiny angles, and acos(cos "
+         "gamma) near cos gamma = 1 keeps only the square root of the digits (1e-10 relative here); "
+         "atan2(|R_k+1 x R_k|, R_k . R_k+1) keeps them all";
 }
 
 TEST(Ex6_2_Contour, WorksForTriangles) {
-  // The square split along its diagonal: the two halves add up to the square.
+  // The square split along its diagonal: the two halves add up to the square. Each
+  // triangle sits in an array of four whose last entry is not one of its vertices.
   const std::array<vec3, 4> q = rectangle(0, 1, 0, 1, 1);
-  const vec3 t1[3] = {q[0], q[1], q[2]}, t2[3] = {q[0], q[2], q[3]};
+  const vec3 decoy(40, -30, 1);
+  const std::array<vec3, 4> t1 = {q[0], q[1], q[2], decoy}, t2 = {q[0], q[2], q[3], decoy};
   const double whole = gi::ff_point_to_parallel_rectangle_corner(1, 1, 1);
-  EXPECT_NEAR(gi::contour_integral({0, 0, 0}, {0, 0, 1}, t1, 3) + gi::contour_integral({0, 0, 0}, {0, 0, 1}, t2, 3),
+  EXPECT_NEAR(gi::contour_integral({0, 0, 0}, {0, 0, 1}, t1.data(), 3) +
+                  gi::contour_integral({0, 0, 0}, {0, 0, 1}, t2.data(), 3),
               whole, 1e-12)
-      << "use `count` vertices and wrap around from the last to the first";
+      << "use `count` vertices (here 3) and wrap around from the last to the first";
+}
+
+TEST(Ex6_2_Contour, TurningTheWholeSceneChangesNothing) {
+  // Howell's corner case turned 40 degrees about x and then 25 about y: the point's
+  // normal is no longer the z axis, the form factor is the same.
+  const double a = 40 * gi::pi / 180, b = 25 * gi::pi / 180;
+  const auto turn = [&](vec3 v) {
+    v = vec3(v.x, std::cos(a) * v.y - std::sin(a) * v.z, std::sin(a) * v.y + std::cos(a) * v.z);
+    return vec3(std::cos(b) * v.x + std::sin(b) * v.z, v.y, -std::sin(b) * v.x + std::cos(b) * v.z);
+  };
+  std::array<vec3, 4> r = rectangle(0, 1.3, 0, 0.6, 0.9);
+  for (vec3& v : r) v = turn(v);
+  EXPECT_NEAR(contour(turn({0, 0, 1}), r), gi::ff_point_to_parallel_rectangle_corner(1.3, 0.6, 0.9), 1e-12)
+      << "project each edge's term on the point's normal n (n . (R_k+1 x R_k)), not on a fixed axis";
 }
 
 TEST(Ex6_2_Contour, TheNormalOfTheReceivingPointCounts) {

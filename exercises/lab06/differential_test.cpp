@@ -6,6 +6,7 @@
 
 #include "gi/radiosity/configuration_factors.hpp"
 #include "gi/radiosity/form_factor_formulas.hpp"
+#include "support/print.hpp"
 
 using gi::vec3;
 
@@ -57,5 +58,6 @@ TEST(Ex6_1_Differential, GoodFarAwayForPatches) {
   // Unit squares 10 apart: centre to centre is within 1% of the exact patch factor.
   const double exact = gi::ff_parallel_rectangles(1, 1, 10);
   EXPECT_NEAR(gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {0, 0, 10}, {0, 0, -1}, 1.0, 1.0), exact,
-              0.01 * exact);
+              0.01 * exact)
+      << "two unit squares 10 apart: the centre-to-centre formula is within 1% of the exact patch form factor";
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "gi/radiosity/hemicube.hpp"
+#include "support/print.hpp"
 
 using gi::HemicubeFace;
 using gi::vec3;
@@ -27,16 +28,30 @@ TEST(Ex7_3_Projection, BelowTheHorizonIsNothing) {
 }
 
 TEST(Ex7_3_Projection, EachSideFace) {
-  EXPECT_EQ(gi::project_to_hemicube({1, 0.2, 0.5}, 10)->face, HemicubeFace::PlusX);
-  EXPECT_EQ(gi::project_to_hemicube({-1, 0.2, 0.5}, 10)->face, HemicubeFace::MinusX);
-  EXPECT_EQ(gi::project_to_hemicube({0.1, 1, 0.3}, 10)->face, HemicubeFace::PlusY);
-  EXPECT_EQ(gi::project_to_hemicube({0.1, -1, 0.3}, 10)->face, HemicubeFace::MinusY)
-      << "the face is the axis with the largest component, with its sign";
+  const std::pair<vec3, HemicubeFace> cases[] = {{{1, 0.2, 0.5}, HemicubeFace::PlusX},
+                                                 {{-1, 0.2, 0.5}, HemicubeFace::MinusX},
+                                                 {{0.1, 1, 0.3}, HemicubeFace::PlusY},
+                                                 {{0.1, -1, 0.3}, HemicubeFace::MinusY}};
+  for (const auto& [d, face] : cases) {
+    const auto cell = gi::project_to_hemicube(d, 10);
+    ASSERT_TRUE(cell.has_value()) << "every direction with z > 0 meets the hemicube";
+    EXPECT_EQ(cell->face, face) << "direction " << testing::PrintToString(d)
+                                << ": the face is the axis with the largest |component|, with its sign";
+  }
 }
 
 TEST(Ex7_3_Projection, TopCellIndices) {
   // (x, y) / z = (0.5, -0.25): column (0.5 + 1) / 2 * 8 = 6, row (-0.25 + 1) / 2 * 8 = 3.
   expect_cell({1, -0.5, 2}, 8, HemicubeFace::Top, 6, 3, "divide by z to reach the plane z = 1, then map [-1, 1] to cells");
+}
+
+TEST(Ex7_3_Projection, CellsAreCountedNotRounded) {
+  // Top: (x, y) / z = (0.3, -0.55): column (0.3 + 1) / 2 * 10 = 6.5, row 2.25.
+  expect_cell({0.3, -0.55, 1}, 10, HemicubeFace::Top, 6, 2,
+              "a point 6.5 cells from the edge lies in cell 6: truncate towards the edge, do not round");
+  // On x = 1: (y, z) / x = (-0.45, 0.35): column 2.75, row 1.75.
+  expect_cell({2, -0.9, 0.7}, 10, HemicubeFace::PlusX, 2, 1,
+              "a point 2.75 cells across lies in cell 2: truncate towards the edge, do not round");
 }
 
 TEST(Ex7_3_Projection, SideCellIndices) {
@@ -45,22 +60,31 @@ TEST(Ex7_3_Projection, SideCellIndices) {
               "divide by |x| to reach the face x = 1; rows count up from the horizon z = 0 over [0, 1]");
 }
 
+TEST(Ex7_3_Projection, CellsOnTheMinusFaces) {
+  // On the face x = -1: (y, z) / |x| = (0.5, 0.5): column 75 of 100, row 25 of 50.
+  expect_cell({-2, 1, 1}, 100, HemicubeFace::MinusX, 75, 25,
+              "divide by |x|, not x, to reach the face x = -1: the height z / |x| is positive on every side face");
+  // On the face y = -1: (x, z) / |y| = (-0.5, 0.25): column 25 of 100, row 12 of 50.
+  expect_cell({-2, -4, 1}, 100, HemicubeFace::MinusY, 25, 12,
+              "divide by |y|, not y, to reach the face y = -1; columns run along x counted from -1");
+}
+
 TEST(Ex7_3_Projection, LengthDoesNotMatter) {
   const auto a = gi::project_to_hemicube({0.3, 0.1, 0.2}, 50), b = gi::project_to_hemicube({3, 1, 2}, 50);
-  ASSERT_TRUE(a && b);
-  EXPECT_EQ(a->face, b->face);
-  EXPECT_EQ(a->column, b->column);
+  ASSERT_TRUE(a && b) << "both directions have z > 0 and meet the hemicube";
+  EXPECT_EQ(a->face, b->face) << "a direction need not be unit length: only ratios matter";
+  EXPECT_EQ(a->column, b->column) << "a direction need not be unit length: only ratios matter";
   EXPECT_EQ(a->row, b->row) << "a direction need not be unit length: only ratios matter";
 }
 
 TEST(Ex7_3_Projection, EdgesStayInsideTheGrid) {
   for (const vec3& d : {vec3(1, 1, 1), vec3(-1, -1, 1), vec3(1, -1, 1e-9), vec3(-1, 1, 1)}) {
     const auto cell = gi::project_to_hemicube(d, 10);
-    ASSERT_TRUE(cell.has_value());
+    ASSERT_TRUE(cell.has_value()) << "every direction with z > 0 meets the hemicube";
     const int rows = cell->face == HemicubeFace::Top ? 10 : 5;
-    EXPECT_GE(cell->column, 0);
+    EXPECT_GE(cell->column, 0) << "a direction through a cube edge must land in a valid cell: clamp";
     EXPECT_LT(cell->column, 10) << "a direction through a cube edge must land in a valid cell: clamp";
-    EXPECT_GE(cell->row, 0);
-    EXPECT_LT(cell->row, rows) << "side faces have res/2 rows";
+    EXPECT_GE(cell->row, 0) << "a direction through a cube edge must land in a valid cell: clamp";
+    EXPECT_LT(cell->row, rows) << "side faces have res/2 rows; clamp";
   }
 }

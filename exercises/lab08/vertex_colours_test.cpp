@@ -3,6 +3,7 @@
 
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/radiosity/vertex_colours.hpp"
+#include "support/print.hpp"
 
 using gi::Color;
 using gi::vec3;
@@ -31,22 +32,34 @@ TEST(Ex8_1_VertexColours, OneValuePerVertex) {
 
 TEST(Ex8_1_VertexColours, UnsharedVerticesKeepTheirElementsValue) {
   const std::vector<Color> v = gi::vertex_radiosity(two_elements(), {Color(1), Color(2)});
-  EXPECT_EQ(v[0], Color(1));
+  ASSERT_EQ(v.size(), 6u) << "return one radiosity per mesh vertex, indexed like mesh.vertices";
+  EXPECT_EQ(v[0], Color(1)) << "vertex 0 belongs to element 0 only: it takes that element's radiosity";
   EXPECT_EQ(v[2], Color(2)) << "a vertex of one element only takes that element's radiosity";
 }
 
 TEST(Ex8_1_VertexColours, SharedVerticesAreAreaWeighted) {
   const std::vector<Color> v = gi::vertex_radiosity(two_elements(), {Color(1), Color(2)});
+  ASSERT_EQ(v.size(), 6u) << "return one radiosity per mesh vertex, indexed like mesh.vertices";
   EXPECT_NEAR(v[1].x, (1 * 1.0 + 3 * 2.0) / 4, 1e-12)
       << "weight each element by its area: (A_1 B_1 + A_2 B_2) / (A_1 + A_2), not the plain mean 1.5";
-  EXPECT_NEAR(v[4].x, 1.75, 1e-12);
+  EXPECT_NEAR(v[4].x, 1.75, 1e-12) << "vertex 4 is shared like vertex 1: (1 * 1 + 3 * 2) / 4";
 }
 
 TEST(Ex8_1_VertexColours, ChannelsAreAveragedSeparately) {
   const std::vector<Color> v = gi::vertex_radiosity(two_elements(), {Color(1, 0, 0), Color(0, 0, 4)});
-  EXPECT_NEAR(v[1].x, 0.25, 1e-12);
-  EXPECT_NEAR(v[1].y, 0.0, 1e-12);
-  EXPECT_NEAR(v[1].z, 3.0, 1e-12);
+  ASSERT_EQ(v.size(), 6u) << "return one radiosity per mesh vertex, indexed like mesh.vertices";
+  const Color want((1 * 1.0) / 4, 0.0, (3 * 4.0) / 4);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(v[1][c], want[c], 1e-12) << "channel " << c << ": each colour channel is averaged on its own";
+}
+
+TEST(Ex8_1_VertexColours, AVertexOfNoElementStaysBlack) {
+  gi::Mesh mesh = two_elements();
+  mesh.vertices.push_back(vec3(9, 9, 0));  // listed, but no element uses it
+  const std::vector<Color> v = gi::vertex_radiosity(mesh, {Color(1), Color(2)});
+  ASSERT_EQ(v.size(), 7u) << "return one radiosity per mesh vertex, indexed like mesh.vertices";
+  EXPECT_EQ(v[6], Color(0)) << "no element touches vertex 6: its weights sum to 0, so leave it at 0 instead of "
+                               "dividing 0 by 0 (NaN)";
 }
 
 TEST(Ex8_1_VertexColours, AConstantFieldStaysConstant) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "gi/radiosity/solvers.hpp"
+#include "support/print.hpp"
 
 using gi::Color;
 
@@ -27,6 +28,23 @@ TEST(Ex10_1_Southwell, LooksAtEveryChannel) {
   const gi::RadiositySystem s = three();
   std::vector<Color> B(3, Color(0.0)), r = {Color(0.2), Color(0.1, 0.1, 0.9), Color(0.3)};
   EXPECT_EQ(gi::southwell_step(s, B, r), 1) << "element 1's blue residual 0.9 is the largest";
+}
+
+TEST(Ex10_1_Southwell, PicksByTheResidualNotTheArea) {
+  // Element 1 has the most unshot power |r_1| A_1 = 0.6, element 0 the largest residual 0.5.
+  const gi::RadiositySystem s = three();
+  std::vector<Color> B(3, Color(0.0)), r = {Color(0.5), Color(0.3), Color(0.1)};
+  EXPECT_EQ(gi::southwell_step(s, B, r), 0)
+      << "Southwell relaxes the largest residual |r_i|, element 0 (0.5); weighting by area (|r_i| A_i, "
+         "element 1's 0.6) is progressive refinement's rule, not this one";
+}
+
+TEST(Ex10_1_Southwell, PicksByTheLargestChannelNotTheSum) {
+  const gi::RadiositySystem s = three();
+  std::vector<Color> B(3, Color(0.0)), r = {Color(0.5, 0.0, 0.0), Color(0.3, 0.3, 0.3), Color(0.0)};
+  EXPECT_EQ(gi::southwell_step(s, B, r), 0)
+      << "the size of a residual is its largest channel, max_c |r_i,c|: element 0 (0.5), although element 1's "
+         "channels add up to more (0.9)";
 }
 
 TEST(Ex10_1_Southwell, RelaxesTheChosenElement) {
@@ -62,6 +80,10 @@ TEST(Ex10_1_Southwell, SolverConvergesToTheDirectSolution) {
   options.tolerance = 1e-12;
   options.max_steps = 10000;
   const gi::SolverResult r = gi::solve_southwell(s, options), direct = gi::solve_direct(s);
-  ASSERT_EQ(r.status, gi::SolveStatus::Converged);
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(r.B[i].z, direct.B[i].z, 1e-10);
+  ASSERT_EQ(r.status, gi::SolveStatus::Converged)
+      << "solve_southwell, built on your step, must converge on a system with rho < 1";
+  for (int i = 0; i < 3; ++i)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(r.B[i][c], direct.B[i][c], 1e-10)
+          << "element " << i << ", channel " << c << ": Southwell's fixed point is the solution of (I - RF) B = E";
 }

@@ -1,97 +1,79 @@
-"""check_kit: a student kit builds, scores 0 on every graded test, and holds no
-solution text. Run by ctest as kit_check:
+"""check_kit: a student kit of every lab is what a student should receive. Run by
+ctest as kit_check:
 
     check_kit.py ROOT WORKDIR
 
-WORKDIR (wiped first) receives the kit and its build. The tree's own graded tests
-must already be built in WORKDIR's parent (the tree's build folder).
+WORKDIR (wiped first) receives the kit and its build. Checked: no instructor-only
+file and no solution text in the kit; it builds whole (lessons, unit tests, graded
+tests); every graded test fails, and fails because of the stub it reaches (each
+kit test must be able to fail: a test that passes on the stubs cannot tell a right
+answer from none); the kit has the tree's visible graded tests; the kit's own ctest
+passes (a test reaching a stub is reported as skipped, never as failed); and the
+`lessons` target runs every lesson, not stopping at the first that reaches a stub.
 """
+import re
 import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import build    # noqa: E402
 import grade    # noqa: E402
 import kit      # noqa: E402
 import regions  # noqa: E402
 
 
-def distinctive_lines(root, all_regions):
-    """Per region, the lines of its body that appear in no other source code:
-    finding one of them anywhere in the kit means the solution leaked."""
-    outside = set()
-    in_region = {(r.path, i) for r in all_regions for i in range(r.begin + 1, r.end)}
-    for rel in kit.project_files(root):
-        if rel.suffix not in regions.SOURCE_SUFFIXES:
-            continue  # docs quote the solution in excerpts; the kit must not, so they cannot vouch
-        try:
-            lines = (root / rel).read_text().splitlines()
-        except UnicodeDecodeError:
-            continue
-        outside |= {l.strip() for i, l in enumerate(lines) if (rel, i) not in in_region}
-    return {r.id: [l.strip() for l in regions.body(root, r) if len(l.strip()) >= 12 and l.strip() not in outside]
-            for r in all_regions}
-
-
-def leaks(kit_dir, secrets):
-    """(file:line, exercise) wherever a distinctive solution line occurs in the kit."""
-    wanted = {line: ident for ident, lines in secrets.items() for line in lines}
-    found = []
-    for path in sorted(p for p in kit_dir.rglob("*") if p.is_file() and "build" not in p.relative_to(kit_dir).parts):
-        try:
-            lines = path.read_text().splitlines()
-        except UnicodeDecodeError:
-            continue
-        found += [(f"{path.relative_to(kit_dir)}:{i + 1}", wanted[l.strip()])
-                  for i, l in enumerate(lines) if l.strip() in wanted]
-    return found
+def run(argv, problems, what):
+    done = subprocess.run(argv, capture_output=True, text=True, errors="replace", stdin=subprocess.DEVNULL)
+    if done.returncode != 0:
+        print((done.stdout + done.stderr)[-4000:])
+        problems.append(f"{what} fails: {' '.join(map(str, argv))}")
+    return done
 
 
 def main(argv):
     root, work = Path(argv[1]).resolve(), Path(argv[2]).resolve()
     shutil.rmtree(work, ignore_errors=True)
     kit_dir, kit_build = work / "kit", work / "kit" / "build" / "release"
-    all_regions = regions.find_regions(root)
-    kit.make_kit(root, kit_dir, "all")
     problems = []
+    try:
+        punched = kit.make_kit(root, kit_dir, "all")
+    except (kit.KitError, regions.RegionError) as e:
+        print(f"kit_check: FAILED: make-kit: {e}")
+        return 1
+    if len(punched) != len(regions.find_regions(root)):
+        problems.append("the kit does not stub every exercise")
+    problems += [f"instructor-only file in the kit: {rel}" for rel in build.project_files(kit_dir)
+                 if kit.instructor_only(rel)]
 
-    for r in regions.find_regions(kit_dir):
-        if regions.body(kit_dir, r) != [r.stub()]:
-            problems.append(f"exercise {r.id}: the kit's region is not exactly the stub")
-    if len(regions.find_regions(kit_dir)) != len(all_regions):
-        problems.append("the kit lost or gained exercise regions")
-    problems += [f"{where}: solution text of exercise {ident}" for where, ident in
-                 leaks(kit_dir, distinctive_lines(root, all_regions))]
-
-    # The kit must build as a student receives it.
-    for step in (["cmake", "-S", str(kit_dir), "-B", str(kit_build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release"],
-                 ["cmake", "--build", str(kit_build), "-j", "2"]):
-        done = subprocess.run(step, capture_output=True, text=True)
-        if done.returncode != 0:
-            print((done.stdout + done.stderr)[-4000:])
-            problems.append(f"the kit does not build: {' '.join(step)}")
-            break
-    else:
+    configure = ["cmake", "-S", str(kit_dir), "-B", str(kit_build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release"]
+    if run(configure, problems, "configuring the kit").returncode == 0 and \
+            run(["cmake", "--build", str(kit_build), "-j", "2"], problems, "building the kit").returncode == 0:
         labs = grade.labs_in(kit_dir)
-        kit_results, _ = grade.grade(labs, kit_build, 20, False)
-        tree_results = sum(len(grade.list_tests(subprocess.run(
-            [str(work.parent / "bin" / f"lab{lab:02d}_graded"), "--gtest_list_tests"],
-            capture_output=True, text=True, check=True).stdout)) for lab in labs)
-        passed = [r.name for r in kit_results if r.passed]
-        print(f"kit: {len(kit_results)} graded tests, {len(passed)} passed on the stubs; tree has {tree_results}")
+        results, lab_problems = grade.grade(kit_dir, labs, kit_build, grade.time_limit(kit_build, None), False)
+        problems += lab_problems
+        visible = sum(1 for lab in labs for _, hidden in grade.source_tests(root, lab) if not hidden)
+        passed = [r.name for r in results if r.passed]
+        print(f"kit: {len(results)} graded tests, {len(passed)} passed on the stubs; the tree has {visible} visible")
         if passed:
             problems.append("graded tests that pass on the stubs (they cannot fail): " + ", ".join(passed))
-        if len(kit_results) != tree_results:
-            problems.append(f"the kit has {len(kit_results)} graded tests, the tree {tree_results}")
-        crashed = [r.name for r in kit_results if not r.passed and "NotImplemented" not in r.output
-                   and "not implemented" not in r.output]
-        if crashed:
-            problems.append("graded tests that fail on the stubs for another reason than NotImplemented: " + ", ".join(crashed))
+        if len(results) != visible:
+            problems.append(f"the kit has {len(results)} graded tests, the tree {visible} visible ones")
+        other = [f"{r.name} ({r.hint})" for r in results if not r.passed and "not implemented" not in r.hint]
+        if other:
+            problems.append("graded tests failing on the stubs for another reason than NotImplemented: "
+                            + "; ".join(other[:5]))
+        run(["ctest", "--test-dir", str(kit_build), "-j", "2", "--timeout", "300"], problems, "the kit's ctest")
+        lessons = run(["cmake", "--build", str(kit_build), "--target", "lessons"], problems, "the kit's lessons target")
+        ran = len(re.findall(r"^== \d\d_\w+ ==$", lessons.stdout + lessons.stderr, re.M))  # one line per lesson
+        expected = len(list((kit_dir / "lessons").glob("[0-9][0-9]_*/main.cpp")))
+        if ran < expected:
+            problems.append(f"the lessons target ran {ran} of {expected} lessons")
 
     for p in problems:
         print(f"kit_check: {p}")
-    print("kit_check: " + ("FAILED" if problems else "the kit builds, scores 0 and holds no solution"))
+    print("kit_check: " + ("FAILED" if problems else "the kit builds, scores 0, passes its ctest and holds no solution"))
     return 1 if problems else 0
 
 

@@ -1,73 +1,180 @@
 """make-kit: copy the project with exercises punched out, for students.
 
-    exercises/make-kit DEST [--labs 1,2|all]
+    exercises/make-kit DEST [--labs 1,2|all] [--force]
 
 Every marked region of the chosen labs becomes a stub that throws
 gi::NotImplemented; the docs' code excerpts are refreshed from the stubbed source,
-so no solution survives there either. exercises/KIT lists the punched exercises.
+so no solution survives there either; exercises/KIT lists the stubbed exercises (the
+grader grades those labs). Instructor-only files (mutants, autograder, hidden tests,
+the kit maker) stay behind.
+
+The kit is written into a temporary folder beside DEST and checked -- every chosen
+region is exactly its stub, and no distinctive line of any of their solutions is
+left anywhere in it -- before it is renamed to DEST. An interrupted run, a full disk
+or a failed check leaves no DEST: a half-made kit, which could hold solutions, is
+never where a kit is expected.
 """
 import argparse
+import os
 import shutil
-import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import build     # noqa: E402
 import excerpts  # noqa: E402
 import regions   # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
-SKIP = {"build", "out", ".git", "__pycache__"}
+# Kept out of kits: how the course tests its tests, grades with hidden tests, and makes kits.
+INSTRUCTOR_ONLY = ("exercises/mutants/", "exercises/autograder/", "exercises/make-kit", "exercises/tools/kit.py",
+                   "exercises/tools/check_kit.py", "exercises/tools/check_autograder.py", "exercises/tools/mutants.py",
+                   "exercises/tools/submission.py",
+                   "exercises/tools/test_")
 
 
-def project_files(root):
-    """The files a kit copies: git's tracked and untracked-but-not-ignored files in a
-    checkout, otherwise everything outside build products."""
-    root = Path(root)
-    try:
-        listed = subprocess.run(["git", "ls-files", "--cached", "--others", "--exclude-standard", "-z"],
-                                cwd=root, check=True, capture_output=True).stdout.decode()
-        return sorted({Path(p) for p in listed.split("\0") if p and (root / p).is_file()})
-    except (OSError, subprocess.CalledProcessError):
-        return sorted(p.relative_to(root) for p in root.rglob("*")
-                      if p.is_file() and not SKIP & set(p.relative_to(root).parts))
+class KitError(Exception):
+    """A failure while writing the kit: one line, exit status 1."""
 
 
-def make_kit(root, dest, labs_spec):
-    root, dest = Path(root).resolve(), Path(dest).resolve()
-    if dest.exists() and any(dest.iterdir()):
-        raise regions.RegionError(f"{dest} exists and is not empty")
+class UsageError(KitError):
+    """A bad command line or destination: one line, exit status 2."""
+
+
+def instructor_only(rel):
+    text = rel.as_posix()
+    return text.startswith(INSTRUCTOR_ONLY) or (text.startswith("exercises/lab") and "/hidden/" in text)
+
+
+def distinctive_lines(root, secret_regions):
+    """Per region, the lines of its body that appear nowhere else in the source (outside
+    the given regions): finding one of them in a kit means that solution leaked."""
+    inside = {(r.path, i) for r in secret_regions for i in range(r.begin + 1, r.end)}
+    outside = set()
+    for rel in build.project_files(root):
+        if rel.suffix not in regions.SOURCE_SUFFIXES:
+            continue  # docs quote solutions in excerpts; a kit's must not, so they cannot vouch
+        try:
+            lines = (root / rel).read_text().splitlines()
+        except UnicodeDecodeError:
+            continue
+        outside |= {line.strip() for i, line in enumerate(lines) if (rel, i) not in inside}
+    return {r.id: [line.strip() for line in regions.body(root, r)
+                   if len(line.strip()) >= 12 and line.strip() not in outside] for r in secret_regions}
+
+
+def leaks(kit_dir, secrets):
+    """(file:line, exercise) wherever a distinctive solution line occurs in the kit."""
+    wanted = {line: ident for ident, lines in secrets.items() for line in lines}
+    found = []
+    for rel in build.project_files(kit_dir):
+        try:
+            lines = (kit_dir / rel).read_text().splitlines()
+        except UnicodeDecodeError:
+            continue
+        found += [(f"{rel}:{i + 1}", wanted[line.strip()]) for i, line in enumerate(lines) if line.strip() in wanted]
+    return found
+
+
+def check_destination(root, dest, force):
+    if dest == root or root.is_relative_to(dest):
+        raise UsageError(f"{dest} holds the project itself; choose a new folder")
     if dest.is_relative_to(root) and not dest.is_relative_to(root / "build"):
-        raise regions.RegionError(f"{dest} is inside the project; put the kit outside it or under build/")
-    all_regions = regions.find_regions(root)
-    labs = regions.parse_labs(labs_spec, {r.lab for r in all_regions})
-    punched = [r for r in all_regions if r.lab in labs]
+        raise UsageError(f"{dest} is inside the project; put the kit outside it or under build/")
+    if dest.is_symlink() or (dest.exists() and not dest.is_dir()):
+        raise UsageError(f"{dest} exists and is not a folder")
+    if dest.is_dir() and any(dest.iterdir()) and not force:
+        raise UsageError(f"{dest} exists and is not empty (--force replaces it)")
 
-    for rel in project_files(root):
-        target = dest / rel
+
+def write_kit(root, folder, punched):
+    """Copies the project into `folder` and punches the regions out."""
+    for rel in build.project_files(root):
+        if instructor_only(rel):
+            continue
+        target = folder / rel
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(root / rel, target)
-    by_file = {}
+    for rel in sorted({r.path for r in punched}):
+        path = folder / rel
+        path.write_text(regions.stub_text(path.read_text(), [r for r in punched if r.path == rel]))
+    problems = excerpts.process(folder, fix=True)
+    if problems:
+        raise KitError(f"the docs' code excerpts cannot be refreshed: {problems[0].splitlines()[0]}")
+    (folder / "exercises" / "KIT").write_text("".join(f"{r.id} {r.title}\n" for r in punched))
+
+
+def check_kit_text(root, folder, punched):
+    """Raises KitError unless every punched region is its stub and no solution is left."""
+    stubbed = {r.id: r for r in regions.find_regions(folder)}
     for r in punched:
-        by_file.setdefault(r.path, []).append(r)
-    for rel, file_regions in by_file.items():
-        path = dest / rel
-        path.write_text(regions.stub_text(path.read_text(), file_regions))
-    excerpts.process(dest, fix=True)
-    (dest / "exercises" / "KIT").write_text("".join(f"{r.id} {r.title}\n" for r in punched))
+        if r.id not in stubbed or regions.body(folder, stubbed[r.id]) != [r.stub()]:
+            raise KitError(f"exercise {r.id} is not stubbed in the kit")
+    found = leaks(folder, distinctive_lines(root, punched))
+    if found:
+        where, ident = found[0]
+        raise KitError(f"solution text of exercise {ident} left at {where} ({len(found)} line(s) in all)")
+
+
+def move_into_place(temp, dest):
+    """Renames the finished kit to dest; an existing dest (empty, or --force) goes."""
+    if not dest.exists():
+        os.rename(temp, dest)
+        return
+    old = Path(tempfile.mkdtemp(prefix=f".{dest.name}.old-", dir=dest.parent))
+    os.rename(dest, old / "kit")
+    os.rename(temp, dest)
+    shutil.rmtree(old, ignore_errors=True)
+
+
+def make_kit(root, dest, labs_spec, force=False):
+    """Writes the kit; returns the punched regions."""
+    root, dest = Path(root).resolve(), Path(os.path.abspath(dest))
+    check_destination(root, dest.resolve(), force)
+    all_regions = regions.find_regions(root)
+    try:
+        labs = regions.parse_labs(labs_spec, {r.lab for r in all_regions})
+    except regions.RegionError as e:
+        raise UsageError(str(e))
+    punched = [r for r in all_regions if r.lab in labs]
+    try:
+        dest.parent.mkdir(parents=True, exist_ok=True)
+        for stale in dest.parent.glob(f".{dest.name}.partial-*"):  # left by a run that was killed
+            shutil.rmtree(stale, ignore_errors=True)
+        temp = Path(tempfile.mkdtemp(prefix=f".{dest.name}.partial-", dir=dest.parent))
+    except OSError as e:
+        raise KitError(f"cannot write in {dest.parent}: {e.strerror}")
+    try:
+        write_kit(root, temp, punched)
+        check_kit_text(root, temp, punched)
+        move_into_place(temp, dest)
+    except OSError as e:
+        raise KitError(f"cannot write the kit in {dest.parent}: {e.strerror}; no kit was made")
+    finally:
+        shutil.rmtree(temp, ignore_errors=True)
     return punched
 
 
+class OneLineParser(argparse.ArgumentParser):
+    def error(self, message):
+        raise UsageError(f"{message} (try --help)")
+
+
 def main(argv):
-    parser = argparse.ArgumentParser(prog="make-kit", description="Write a student kit with exercises punched out.")
+    parser = OneLineParser(prog="make-kit", description="Write a student kit with exercises punched out.")
     parser.add_argument("dest", help="folder to create (must not exist, or be empty)")
     parser.add_argument("--labs", default="all", help="labs to punch out: 'all' or a list like 1,2")
-    args = parser.parse_args(argv)
+    parser.add_argument("--force", action="store_true", help="replace a DEST that is not empty")
     try:
-        punched = make_kit(ROOT, args.dest, args.labs)
-    except regions.RegionError as e:
+        args = parser.parse_args(argv)
+        punched = make_kit(ROOT, args.dest, args.labs, args.force)
+    except (KitError, regions.RegionError) as e:
         print(f"make-kit: error: {e}", file=sys.stderr)
-        return 2
+        return 2 if isinstance(e, UsageError) else 1
+    except KeyboardInterrupt:
+        print("make-kit: interrupted; no kit was made", file=sys.stderr)
+        return 130
     for lab in sorted({r.lab for r in punched}):
         ids = ", ".join(r.id for r in punched if r.lab == lab)
         print(f"lab {lab}: stubbed {ids}")

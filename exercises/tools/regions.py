@@ -95,12 +95,14 @@ def stub_text(text, regions):
 
 def parse_labs(spec, available):
     """'all' or '1,2' -> the set of lab numbers, checked against those available."""
-    if spec in (None, "", "all"):
+    if spec is None or spec.strip() == "all":
         return set(available)
     try:
         labs = {int(part) for part in spec.split(",") if part.strip()}
     except ValueError:
         raise RegionError(f"--labs takes numbers like 1,2 or 'all', got '{spec}'")
+    if not labs:
+        raise RegionError(f"--labs '{spec}' names no lab; give numbers like 1,2 or 'all'")
     unknown = labs - set(available)
     if unknown:
         raise RegionError(f"no lab {', '.join(map(str, sorted(unknown)))}; labs are {', '.join(map(str, sorted(available)))}")

@@ -1,13 +1,19 @@
-"""Unit tests of the exercise tools on small made-up trees (ctest: exercise_tools)."""
+"""Unit tests of the exercise tools on small made-up trees, and checks of the graded
+tests and handouts themselves (ctest: exercise_tools)."""
+import re
 import sys
 import tempfile
 import unittest
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import build     # noqa: E402
 import excerpts  # noqa: E402
 import grade     # noqa: E402
+import mutants   # noqa: E402
 import regions   # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[2]
 
 SOURCE = """#include "gi/core/not_implemented.hpp"
 double twice(double x) {
@@ -41,8 +47,8 @@ class Regions(unittest.TestCase):
         self.assertEqual(regions.parse_labs("2", {1, 2}), {2})
         with self.assertRaisesRegex(regions.RegionError, "no lab 7"):
             regions.parse_labs("1,7", {1, 2})
-        with self.assertRaises(regions.RegionError):
-            regions.parse_labs("one", {1, 2})
+        with self.assertRaisesRegex(regions.RegionError, "names no lab"):
+            regions.parse_labs(",", {1, 2})
 
 
 class Excerpts(unittest.TestCase):
@@ -71,24 +77,123 @@ class Excerpts(unittest.TestCase):
         self.assertIn("no line starts with", excerpts.process(root, fix=False)[0])
 
 
-class Grader(unittest.TestCase):
-    def test_lists_tests_from_gtest_output(self):
-        listing = "Ex1_1_RaySphere.\n  NearRoot\n  FarRoot\nEx1_2_Plane.\n  Parallel  # GetParam() = 1\n"
-        self.assertEqual(grade.list_tests(listing),
-                         ["Ex1_1_RaySphere.NearRoot", "Ex1_1_RaySphere.FarRoot", "Ex1_2_Plane.Parallel"])
+class BuildErrors(unittest.TestCase):
+    def tree(self):
+        root = Path(tempfile.mkdtemp())
+        (root / "lib").mkdir()
+        (root / "lib" / "a.cpp").write_text(SOURCE)
+        (root / "lib" / "b.cpp").write_text("int b() { return 1; }\n")
+        return root
 
-    def test_failure_text_is_what_the_test_printed(self):
-        output = ("[ RUN      ] S.T\nfile.cpp:10: Failure\nexpected 4, got 6\nreturn the nearer root\n"
-                  "[  FAILED  ] S.T (0 ms)\n[  FAILED  ] 1 test, listed below:\n")
-        self.assertEqual(grade.failure_text(output, "S.T"),
-                         "file.cpp:10: Failure\nexpected 4, got 6\nreturn the nearer root")
+    def test_compile_errors_name_the_region_they_fall_in(self):
+        root = self.tree()
+        log = (f"[1/3] Building CXX object a.o\nFAILED: a.o\n{root}/lib/a.cpp:4:30: error: expected ';' before 'return'\n"
+               f"{root}/lib/a.cpp:9:1: error: expected '}}' at end of input\n")
+        self.assertEqual(build.broken_regions(root, log), {"3.1": "lib/a.cpp:4: error: expected ';' before 'return'"})
+        self.assertEqual(build.first_error(log), f"{root}/lib/a.cpp:4:30: error: expected ';' before 'return'")
 
-    def test_gradescope_json_shape(self):
-        results = [grade.Result(1, "1.1", "Ex1_1_A.B", True, "passed"), grade.Result(1, "1.1", "Ex1_1_A.C", False, "no")]
-        data = grade.gradescope(results, "summary")
-        self.assertEqual(data["score"], 1)
-        self.assertEqual([t["max_score"] for t in data["tests"]], [1, 1])
-        self.assertEqual({t["visibility"] for t in data["tests"]}, {"visible"})
+    def test_errors_outside_any_region_stub_none(self):
+        root = self.tree()
+        self.assertEqual(build.broken_regions(root, f"{root}/lib/b.cpp:1:5: error: nope\n"), {})
+        self.assertEqual(build.first_error("x.o: in function `f':\nx.cpp:(.text+0x5): undefined reference to `g'\n"),
+                         "x.cpp:(.text+0x5): undefined reference to `g'")
+
+    def test_restub_puts_the_stub_back(self):
+        root = self.tree()
+        build.restub(root, {"3.1"})
+        self.assertIn('throw gi::NotImplemented("exercise 3.1 doubling");', (root / "lib" / "a.cpp").read_text())
+
+
+class Mutants(unittest.TestCase):
+    TEXT = """# a comment
+== 3.1 triple
+Triples instead of doubling.
+@ a.cpp
+- const double y = x + x;
++ const double y = x + x + x;
+"""
+
+    def test_parses_and_applies_inside_the_region_ignoring_indentation(self):
+        [m] = mutants.parse(self.TEXT, "t.mut")
+        self.assertEqual((m.exercise, m.name, m.file, m.why), ("3.1", "triple", "a.cpp", "Triples instead of doubling."))
+        self.assertIn("  const double y = x + x + x;\n", mutants.apply(SOURCE, m))
+
+    def test_fails_loudly_when_it_no_longer_applies(self):
+        [m] = mutants.parse(self.TEXT.replace("x + x;", "x * 2;"), "t.mut")
+        with self.assertRaisesRegex(mutants.MutantError, "no longer applies.*found 0 times"):
+            mutants.apply(SOURCE, m)
+        [m] = mutants.parse(self.TEXT.replace("== 3.1", "== 3.2"), "t.mut")
+        with self.assertRaisesRegex(mutants.MutantError, "no region for exercise 3.2"):
+            mutants.apply(SOURCE, m)
+        outside = SOURCE.replace("double twice(double x) {", "double twice(double x) {\n  const double y = x + x;")
+        [m] = mutants.parse(self.TEXT, "t.mut")
+        self.assertIn("x + x + x", mutants.apply(outside, m), "only the line inside the region counts")
+
+    def test_malformed_files(self):
+        for bad in ("stray text\n", "== 3.1\n", "== 3.1 x\n@ a.cpp\n", "== 3.1 x\n- y\n"):
+            with self.assertRaises(mutants.MutantError):
+                mutants.parse(bad, "t.mut")
+
+    def test_every_mutant_in_the_repository_applies(self):
+        for m in mutants.load(sorted((ROOT / "exercises" / "mutants").glob("*.mut"))):
+            self.assertNotEqual(mutants.apply((ROOT / m.file).read_text(), m), (ROOT / m.file).read_text(), m.id)
+
+
+MACRO = re.compile(r"\b(EXPECT|ASSERT)_[A-Z_]+\s*\(")
+
+
+def assertions(text):
+    """(line, whole statement, what follows the macro's parentheses) of each assertion."""
+    for m in MACRO.finditer(text):
+        i, depth = m.end(), 1
+        while depth and i < len(text):
+            depth += {"(": 1, ")": -1}.get(text[i], 0)
+            i += 1
+        yield text.count("\n", 0, m.start()) + 1, text[m.start():text.find(";", i)], text[i:text.find(";", i)]
+
+
+class GradedTests(unittest.TestCase):
+    """The graded tests themselves: what every one of them must do for a student."""
+
+    def files(self):
+        return sorted((ROOT / "exercises").glob("lab[0-9][0-9]/**/*_test.cpp"))
+
+    def test_every_assertion_carries_a_hint(self):
+        missing = [f"{path.relative_to(ROOT)}:{line}: {statement.splitlines()[0]}" for path in self.files()
+                   for line, statement, rest in assertions(path.read_text()) if "<<" not in rest]
+        self.assertEqual(missing, [], "a failing assertion without a message leaves the student with gtest's text")
+
+    def test_suites_name_an_exercise_of_their_lab_and_tests_print_readably(self):
+        ids = {r.id for r in regions.find_regions(ROOT)}
+        for path in self.files():
+            text = path.read_text()
+            self.assertIn('#include "support/print.hpp"', text, f"{path.name}: include the printers")
+            lab = int(path.relative_to(ROOT / "exercises").parts[0][3:])
+            for suite, test in re.findall(r"^TEST\((\w+), (\w+)\)", text, re.M):
+                found = re.match(r"Ex(\d+)_(\d+)_", suite)
+                self.assertTrue(found, f"{path.name}: suite {suite} does not name its exercise (Ex{lab}_N_...)")
+                self.assertEqual(int(found.group(1)), lab, f"{path.name}: {suite} belongs to another lab")
+                self.assertIn(f"{found.group(1)}.{found.group(2)}", ids, f"{path.name}: {suite}: no such exercise")
+
+    def test_handouts_give_each_exercise_its_number_of_points(self):
+        for lab in grade.labs_in(ROOT):
+            handout = (ROOT / "exercises" / f"lab{lab:02d}" / "README.md").read_text()
+            counts = {}
+            for name, hidden in grade.source_tests(ROOT, lab):
+                if not hidden:
+                    counts[grade.exercise_of(name, lab)] = counts.get(grade.exercise_of(name, lab), 0) + 1
+            for exercise, count in counts.items():
+                self.assertRegex(handout, rf"## Exercise {re.escape(exercise)} .*\({count} points?\)",
+                                 f"lab {lab}: the handout's points for {exercise} are not its {count} tests")
+                self.assertRegex(handout, rf"\| {re.escape(exercise)} \| .* \| {count} \|",
+                                 f"lab {lab}: the handout's table gives {exercise} another number of points")
+            self.assertIn(f"`score: X/{sum(counts.values())}`", handout, f"lab {lab}: the handout's total is wrong")
+            hidden = sum(1 for _, h in grade.source_tests(ROOT, lab) if h)
+            count = f"{sum(counts.values())}" + (f" (+{hidden})" if hidden else "")
+            self.assertRegex((ROOT / "exercises" / "README.md").read_text(), rf"\| {lab} \| \[lab{lab:02d}/.* \| {re.escape(count)} \|",
+                             f"exercises/README.md: lab {lab} has {count} graded tests")
+            self.assertIn(f"--target lab{lab:02d}_graded\n    exercises/grade --labs {lab}\n", handout,
+                          f"lab {lab}: the handout must give the two commands to build and grade the lab")
 
 
 if __name__ == "__main__":

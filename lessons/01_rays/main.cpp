@@ -13,7 +13,6 @@
 #include "gi/raytrace/render.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"
-#include "gi/scene/builtin_scenes.hpp"
 
 namespace {
 
@@ -74,10 +73,10 @@ int main(int argc, char** argv) {
   std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
   int width = 480, height = 360;
   std::string scene_name = "spheres";
+  gi::Scene scene;
   lesson.add_image_size(width, height);
-  lesson.options()
-      .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
-      .add("--scene", scene_name, "scene to draw", gi::scene_names());
+  lesson.options().add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names());
+  lesson.add_scene(scene_name, scene);
   return lesson.run(argc, argv, [&] {
     const gi::Sphere sphere{{0, 0, -5}, 1, 0};
     const gi::Table spheres = worked_cases("Ray-sphere: sphere at (0, 0, -5), radius 1", sphere,
@@ -101,7 +100,7 @@ int main(int argc, char** argv) {
     std::cout << '\n';
     lesson.table(planes, "ray_plane");
 
-    const gi::World world = gi::make_world(gi::make_scene(scene_name), gi::acceleration_from_name(accel));
+    const gi::World world = gi::make_world(scene, gi::acceleration_from_name(accel));
     draw_eye_rays(world, width, height, lesson);
     lesson.say("\nimages: " + lesson.out().string() + "/{hit_or_miss,normals,depth}.png");
   });

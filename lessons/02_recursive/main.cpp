@@ -16,7 +16,6 @@
 #include "gi/report/lesson.hpp"
 #include "gi/report/progress.hpp"
 #include "gi/report/table.hpp"
-#include "gi/scene/builtin_scenes.hpp"
 
 namespace {
 
@@ -115,31 +114,34 @@ int main(int argc, char** argv) {
   std::string accel = "bvh";  // a kit without lab 5 done can still render by brute force
   gi::RenderSettings settings;
   std::string scene_name = "whitted";
+  gi::Scene scene;
   std::optional<int> single_depth;
   int max_depth = 8, reference_depth = 30, repeat = 3;
   lesson.add_image_size(settings.width, settings.height);
   lesson.options()
-      .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
-      .add("--scene", scene_name, "scene to render", gi::scene_names())
+      .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names());
+  lesson.add_scene(scene_name, scene);
+  lesson.options()
       .add("--max-depth", max_depth, "sweep depth limits 0..N", 0, 40)
       .add("--reference-depth", reference_depth, "depth limit of the reference render", 1, 60)
       .add_optional("--depth", single_depth, "render once at this depth limit instead of the sweep", 0, 60)
       .add("--repeat", repeat, "renders per measurement; the median time is reported", 1, 50);
   return lesson.run(argc, argv, [&] {
     settings.threads = lesson.threads();
-    const gi::World world = gi::make_world(gi::make_scene(scene_name), gi::acceleration_from_name(accel));
+    const gi::World world = gi::make_world(scene, gi::acceleration_from_name(accel));
 
     if (single_depth) {  // one render, for timing against another renderer
       settings.trace.max_depth = *single_depth;
       const gi::RenderResult r = render_median(world, settings, repeat);
-      gi::Table table("Scene " + scene_name + ", depth limit " + std::to_string(*single_depth) + ", " +
+      const std::string stem = gi::file_stem(scene.name) + "_depth_" + std::to_string(*single_depth);
+      gi::Table table("Scene " + scene.name + ", depth limit " + std::to_string(*single_depth) + ", " +
                           std::to_string(settings.width) + "x" + std::to_string(settings.height) + ", median of " +
                           std::to_string(repeat),
                       ray_columns("depth"));
       table.add_row(ray_row(*single_depth, r, nullptr));
-      lesson.table(table, scene_name + "_depth_" + std::to_string(*single_depth));
-      lesson.picture(r.image, scene_name + "_depth_" + std::to_string(*single_depth),
-                     "scene " + scene_name + " at depth limit " + std::to_string(*single_depth), view(world, settings));
+      lesson.table(table, stem);
+      lesson.picture(r.image, stem, "scene " + scene.name + " at depth limit " + std::to_string(*single_depth),
+                     view(world, settings));
       return;
     }
 
@@ -160,7 +162,7 @@ int main(int argc, char** argv) {
     std::cout << '\n';
     lesson.table(cutoffs.table, "thresholds");
     std::cout << '\n';
-    const gi::Chart chart{"Stopping recursion: error against time (" + scene_name + ")", "render time (ms)",
+    const gi::Chart chart{"Stopping recursion: error against time (" + scene.name + ")", "render time (ms)",
                           "RMSE against the reference", false, true, {depths.series, cutoffs.series}};
     lesson.chart(chart, "error_vs_time");
     lesson.say("images and charts: " + lesson.out().string() + "/");

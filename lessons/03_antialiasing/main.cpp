@@ -14,7 +14,6 @@
 #include "gi/report/lesson.hpp"
 #include "gi/report/progress.hpp"
 #include "gi/report/table.hpp"
-#include "gi/scene/builtin_scenes.hpp"
 
 namespace {
 
@@ -44,7 +43,8 @@ gi::View view(const gi::World& world, const gi::RenderSettings& settings) {
 gi::Image reference_image(const gi::World& world, gi::RenderSettings settings, int n, gi::Lesson& lesson) {
   settings.sampling = {gi::Sampler::Jittered, n};
   settings.seed += 1000;  // independent of the jittered runs being measured
-  gi::CachedImage cached = gi::cached_reference(world, settings, "built-in scene " + world.scene.name, lesson.out());
+  const std::string scene_key = "scene " + world.scene.name + ", fingerprint " + gi::fingerprint(world.scene);
+  gi::CachedImage cached = gi::cached_reference(world, settings, scene_key, lesson.out());
   if (cached.from_cache) lesson.say("reference: read from the cache " + cached.file.string() + "\n");
   else if (cached.reason != "no cached image") lesson.say("reference: rendered again, " + cached.reason + "\n");
   lesson.record(cached.file, gi::OutputKind::Cache, "the cached reference image, linear");
@@ -69,20 +69,22 @@ int main(int argc, char** argv) {
   settings.height = 240;
   settings.trace.max_depth = 3;
   std::string scene_name = "aliasing";
+  gi::Scene scene;
   int reference_n = 16;
   lesson.add_image_size(settings.width, settings.height);
   lesson.options()
-      .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
-      .add("--scene", scene_name, "scene to render", gi::scene_names())
+      .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names());
+  lesson.add_scene(scene_name, scene);
+  lesson.options()
       .add("--depth", settings.trace.max_depth, "recursion depth limit", 0, 30)
       .add("--reference-n", reference_n, "reference: jittered n x n samples per pixel", 4, 64);
   return lesson.run(argc, argv, [&] {
     settings.threads = lesson.threads();
     settings.seed = lesson.seed();
-    const gi::World world = gi::make_world(gi::make_scene(scene_name), gi::acceleration_from_name(accel));
+    const gi::World world = gi::make_world(scene, gi::acceleration_from_name(accel));
     const gi::Image reference = reference_image(world, settings, reference_n, lesson);
 
-    gi::Table table("Anti-aliasing, scene " + scene_name + ", against jittered " + std::to_string(reference_n) + "x" +
+    gi::Table table("Anti-aliasing, scene " + scene.name + ", against jittered " + std::to_string(reference_n) + "x" +
                         std::to_string(reference_n),
                     {{"method"}, {"spp", 2}, {"eye rays"}, {"ms", 1}, {"RMSE", 2, gi::Format::Scientific},
                      {"PSNR dB", 1}});
@@ -134,7 +136,7 @@ int main(int argc, char** argv) {
     lesson.table(table, "antialiasing");
     std::cout << '\n';
     lesson.table(adaptive, "adaptive");
-    lesson.chart({"Anti-aliasing: error against time (" + scene_name + ")", "render time (ms)",
+    lesson.chart({"Anti-aliasing: error against time (" + scene.name + ")", "render time (ms)",
                   "RMSE against the reference", true, true, curves},
                  "error_vs_time");
     lesson.say("\nimages and charts: " + lesson.out().string() + "/ (edge_crops.png: centre, grid, random, jittered, " +

@@ -2,7 +2,8 @@
 // rays. The penumbra grows with the light as similar triangles predict; the noise
 // falls with the number of shadow rays, faster when they are jittered.
 #include <algorithm>
-#include <cstdio>
+#include <functional>
+#include <optional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -15,6 +16,8 @@
 #include "gi/report/lesson.hpp"
 #include "gi/report/progress.hpp"
 #include "gi/report/table.hpp"
+#include "gi/scene/builtin_scenes.hpp"
+#include "gi/scene/scene_file.hpp"
 #include "gi/scene/soft_shadow_scene.hpp"
 
 namespace {
@@ -43,6 +46,27 @@ double measured_penumbra(const gi::World& world, gi::Rng& rng) {
   return (x90 - x10) / 0.8;
 }
 
+// 1. The penumbra against the light's size, measured on the floor of the built-in
+// scene and rendered.
+gi::Table penumbra_study(gi::RenderSettings settings, const std::string& accel, gi::Rng& rng,
+                         const std::function<gi::View(const gi::World&, const gi::RenderSettings&)>& view,
+                         gi::Lesson& lesson) {
+  gi::Table penumbra("Penumbra of the box's edge against light size (similar triangles: w = s h / (H - h))",
+                     {{"light size s", 2}, {"predicted w", 3}, {"measured w", 3}, {"shadow rays/hit"}});
+  std::vector<gi::Image> strip;
+  for (double s : {0.0, 0.25, 0.5, 1.0, 2.0}) {
+    const gi::World lit = gi::make_world(gi::soft_shadow_scene(s), gi::acceleration_from_name(accel));
+    const double predicted = s * gi::soft_shadow_box_height / (gi::soft_shadow_light_height - gi::soft_shadow_box_height);
+    settings.trace.soft_shadows = {gi::LightSampling::Jittered, 8};
+    penumbra.add_row({s, predicted, measured_penumbra(lit, rng), s == 0 ? 1 : 64});
+    strip.push_back(gi::render(lit, settings).image);
+    const std::string size = gi::format_number(s, 2, gi::Format::Fixed);
+    lesson.picture(strip.back(), "light_size_" + size, "light of side " + size, view(lit, settings));
+  }
+  lesson.diagram(gi::side_by_side(strip), "penumbra_by_light_size", "light sizes 0, 0.25, 0.5, 1 and 2 side by side");
+  return penumbra;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -55,10 +79,17 @@ int main(int argc, char** argv) {
   settings.trace.max_depth = 1;
   double light_size = 1.0;
   int reference_n = 24;
+  std::string scene_name = "soft";  // its scene is made for the penumbra's measurement
+  gi::Scene scene;
   lesson.add_image_size(settings.width, settings.height);
+  lesson.options().add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names());
+  lesson.add_scene(scene_name, gi::scene_names(), [&](const std::string& choice, auto& warnings) {
+    scene = choice == "soft" ? gi::soft_shadow_scene(light_size) : gi::load_scene(choice, warnings);
+    if (scene.area_lights.empty())
+      throw gi::OptionError("--scene " + choice + " has no quad light, and soft shadows need one (\"quad_lights\")");
+  });
   lesson.options()
-      .add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names())
-      .add("--light-size", light_size, "side of the square area light (scene units)", 0.05, 4.0)
+      .add("--light-size", light_size, "side of the square area light of the scene soft (scene units)", 0.05, 4.0)
       .add("--reference-n", reference_n, "reference: jittered n x n shadow rays per hit", 4, 64);
   return lesson.run(argc, argv, [&] {
     settings.threads = lesson.threads();
@@ -71,28 +102,17 @@ int main(int argc, char** argv) {
                           gi::light_sampling_name(s.trace.soft_shadows.sampling) + " shadow rays per hit"};
     };
 
-    // 1. The penumbra against the light's size, measured on the floor and rendered.
-    gi::Table penumbra("Penumbra of the box's edge against light size (similar triangles: w = s h / (H - h))",
-                       {{"light size s", 2}, {"predicted w", 3}, {"measured w", 3}, {"shadow rays/hit"}});
-    std::vector<gi::Image> strip;
-    for (double s : {0.0, 0.25, 0.5, 1.0, 2.0}) {
-      const gi::World lit = gi::make_world(gi::soft_shadow_scene(s), gi::acceleration_from_name(accel));
-      const double predicted = s * gi::soft_shadow_box_height / (gi::soft_shadow_light_height - gi::soft_shadow_box_height);
-      settings.trace.soft_shadows = {gi::LightSampling::Jittered, 8};
-      penumbra.add_row({s, predicted, measured_penumbra(lit, rng), s == 0 ? 1 : 64});
-      strip.push_back(gi::render(lit, settings).image);
-      const std::string size = gi::format_number(s, 2, gi::Format::Fixed);
-      lesson.picture(strip.back(), "light_size_" + size, "light of side " + size, view(lit, settings));
-    }
-    lesson.diagram(gi::side_by_side(strip), "penumbra_by_light_size", "light sizes 0, 0.25, 0.5, 1 and 2 side by side");
+    // The penumbra is measured on the built-in scene's floor, where its size is known.
+    const bool built_in = scene_name == "soft";
+    std::optional<gi::Table> penumbra;
+    if (built_in) penumbra = penumbra_study(settings, accel, rng, view, lesson);
 
     // 2. Shadow rays per hit against noise and time, for one light size.
-    const gi::World world = gi::make_world(gi::soft_shadow_scene(light_size), gi::acceleration_from_name(accel));
+    const gi::World world = gi::make_world(scene, gi::acceleration_from_name(accel));
     gi::RenderSettings reference_settings = settings;
     reference_settings.trace.soft_shadows = {gi::LightSampling::Jittered, reference_n};
     reference_settings.seed += 1000;  // independent of the runs being measured
-    char scene_key[64];
-    std::snprintf(scene_key, sizeof scene_key, "soft_shadow_scene, light size %.17g", light_size);
+    const std::string scene_key = "scene " + scene.name + ", fingerprint " + gi::fingerprint(scene);
     const gi::CachedImage cached = gi::cached_reference(world, reference_settings, scene_key, lesson.out());
     if (cached.from_cache) lesson.say("reference: read from the cache " + cached.file.string() + "\n");
     else if (cached.reason != "no cached image") lesson.say("reference: rendered again, " + cached.reason + "\n");
@@ -101,8 +121,10 @@ int main(int argc, char** argv) {
     lesson.picture(reference, "reference", "the reference: jittered " + std::to_string(reference_n) + "x" +
                    std::to_string(reference_n) + " shadow rays", view(world, reference_settings));
 
-    gi::Table table("Shadow rays per hit, light size " + gi::format_number(light_size, 2, gi::Format::Fixed) +
-                        ", against jittered " + std::to_string(reference_n) + "x" + std::to_string(reference_n),
+    const std::string what = built_in ? "light size " + gi::format_number(light_size, 2, gi::Format::Fixed)
+                                      : "scene " + scene.name;
+    gi::Table table("Shadow rays per hit, " + what + ", against jittered " + std::to_string(reference_n) + "x" +
+                        std::to_string(reference_n),
                     {{"sampling"}, {"rays/hit"}, {"shadow rays"}, {"ms", 1}, {"RMSE", 2, gi::Format::Scientific},
                      {"PSNR dB", 1}});
     std::vector<gi::Series> curves;
@@ -138,10 +160,13 @@ int main(int argc, char** argv) {
     progress.finish();
     crops.push_back(crop(reference));
     lesson.diagram(gi::side_by_side(crops), "shadow_crops",
-                   "the box and its shadow, 3x: hard, random 1, random 16, jittered 1, jittered 16, reference");
+                   std::string(built_in ? "the box and its shadow" : "a window of the picture") +
+                       ", 3x: hard, random 1, random 16, jittered 1, jittered 16, reference");
 
-    lesson.table(penumbra, "penumbra");
-    std::cout << '\n';
+    if (penumbra) {
+      lesson.table(*penumbra, "penumbra");
+      std::cout << '\n';
+    }
     lesson.table(table, "shadow_rays");
     lesson.chart({"Soft shadows: error against time", "render time (ms)", "RMSE against the reference", true, true,
                   curves},

@@ -11,6 +11,7 @@
 #include "gi/core/timer.hpp"
 #include "gi/image/diff.hpp"
 #include "gi/radiosity/display.hpp"
+#include "gi/radiosity/radiosity_scene_file.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/radiosity/solvers.hpp"
 #include "gi/radiosity/vertex_colours.hpp"
@@ -49,13 +50,21 @@ int main(int argc, char** argv) {
   gi::Lesson lesson("08_radiosity_system", "The radiosity system (I - RF) B = E of a small Cornell box: the "
                                            "matrix, its direct solution, and the Neumann series bounce by bounce.");
   int elements = 400, resolution = 100, bounces = 4;
+  const int most_elements = 3000;  // the direct solution is O(n^3)
   gi::DisplaySettings display;
   display.width = 256;
   display.height = 256;
   double exposure = 1.5;
+  std::string scene_name = "cornell";
+  gi::SceneChanges changes;
+  gi::RadiosityScene scene;
   lesson.add_image_size(display.width, display.height);
+  lesson.add_scene(scene_name, gi::radiosity_scene_names(), [&](const std::string& choice, auto& warnings) {
+    scene = gi::load_radiosity_scene(choice, changes, most_elements, warnings);
+  });
+  lesson.add_scene_changes(changes);
   lesson.options()
-      .add("--elements", elements, "about how many elements to mesh the Cornell box into", 20, 3000)
+      .add("--elements", elements, "about how many elements to mesh the scene into", 20, most_elements)
       .add("--resolution", resolution, "hemicube resolution of the form factors", 10, 1000, gi::even)
       .add("--bounces", bounces, "terms of the Neumann series to picture", 1, 20)
       .add("--exposure", exposure, "multiplies the radiance before display", 0.01, 100.0);
@@ -73,7 +82,6 @@ int main(int argc, char** argv) {
     display.seed = lesson.seed();
     display.white = 1 / exposure;  // anti-aliased edges on the light (display.hpp)
 
-    const gi::RadiosityScene scene = gi::cornell_box();
     const gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, elements, 1), 1});
     const gi::FormFactorScene receivers(gi::element_shapes(mesh));
     gi::FormFactorSettings hemicube;
@@ -87,7 +95,8 @@ int main(int argc, char** argv) {
     if (direct.status != gi::SolveStatus::Converged)
       throw std::runtime_error("the direct solution failed: " + gi::stop_reason(direct, "step"));
     lesson.diagram(matrix_picture(system), "matrix_K", "log10 |K_ij| of K = I - RF (green channel), the diagonal's 1 in red");
-    lesson.say("Cornell box, " + std::to_string(system.size()) + " elements: form factors (hemicube " +
+    const std::string title = scene_name == "cornell" ? "Cornell box" : "Scene " + scene.name;
+    lesson.say(title + ", " + std::to_string(system.size()) + " elements: form factors (hemicube " +
                std::to_string(resolution) + ") " + gi::format_number(ff_ms, 0, gi::Format::Fixed) +
                " ms; K = I - RF solved by Gaussian elimination in " + gi::format_number(direct_ms, 0, gi::Format::Fixed) +
                " ms (3 channels, O(n^3))\n");
@@ -121,11 +130,11 @@ int main(int argc, char** argv) {
     display.shading = gi::Shading::Flat;
     const gi::RadiosityPicture flat = gi::render_radiosity_picture(receivers, mesh, direct.B, scene.camera, display);
     lesson.picture(flat.radiance, "solution_flat", "the direct solution, flat shading", view, exposure, &flat.shown);
-    lesson.file("cornell.ply", gi::OutputKind::Mesh, "the mesh with vertex colours sRGB(exposure B / pi)",
+    lesson.file(gi::file_stem(scene.name) + ".ply", gi::OutputKind::Mesh, "the mesh with vertex colours sRGB(exposure B / pi)",
                 [&](const std::filesystem::path& file) {
                   gi::write_ply(mesh, gi::vertex_radiosity(mesh, direct.B), exposure, file);
                 });
     lesson.say("\nimages: " + lesson.out().string() + "/ (neumann_series.png: emission, direct, bounces..., " +
-               "solution; matrix_K.png; cornell.ply for MeshLab or Blender)");
+               "solution; matrix_K.png; " + gi::file_stem(scene.name) + ".ply for MeshLab or Blender)");
   });
 }

@@ -11,6 +11,7 @@
 #include "gi/image/diff.hpp"
 #include "gi/radiosity/display.hpp"
 #include "gi/radiosity/progressive.hpp"
+#include "gi/radiosity/radiosity_scene_file.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
@@ -38,12 +39,13 @@ const std::vector<int> picture_shots = {1, 2, 24, 100};
 bool contains(const std::vector<int>& list, int value) { return std::find(list.begin(), list.end(), value) != list.end(); }
 
 struct Box {
-  gi::RadiosityScene scene = gi::cornell_box();
+  gi::RadiosityScene scene;
   gi::Mesh mesh;
   gi::FormFactorScene receivers;
   gi::RadiositySystem system;  // shooting needs no matrix: F stays empty
-  Box(double patch_size, int elements_per_side)
-      : mesh(gi::make_mesh(scene.surfaces, {patch_size, elements_per_side})),
+  Box(const gi::RadiosityScene& s, double patch_size, int elements_per_side)
+      : scene(s),
+        mesh(gi::make_mesh(scene.surfaces, {patch_size, elements_per_side})),
         receivers(gi::element_shapes(mesh)),
         system(gi::make_system(mesh, {})) {}
 };
@@ -99,9 +101,9 @@ void watch_the_shots(const Box& box, const gi::ShooterRow& row, const gi::Displa
 
 // 2. Speed: shots until 1% of the emitted energy is left unshot, on a fine mesh,
 // shooting from patches of 4 x 4 elements (the lecture's two levels), one thread.
-void time_to_one_percent(int elements, const gi::FormFactorSettings& hemicube, gi::Lesson& lesson) {
-  const gi::RadiosityScene scene = gi::cornell_box();
-  const Box fine(gi::patch_size_for(scene.surfaces, elements, 4), 4);
+void time_to_one_percent(const gi::RadiosityScene& scene, int elements, const gi::FormFactorSettings& hemicube,
+                         gi::Lesson& lesson) {
+  const Box fine(scene, gi::patch_size_for(scene.surfaces, elements, 4), 4);
   gi::SolverOptions one_percent;
   one_percent.tolerance = 0.01;
   one_percent.max_steps = 1'000'000;
@@ -120,14 +122,22 @@ int main(int argc, char** argv) {
   gi::Lesson lesson("11_progressive", "Progressive refinement on the Cornell box: snapshots after 1, 2, 24 and 100 "
                                       "shots with and without the ambient term; unshot energy and error per step.");
   int patches = 400, elements_per_side = 2, speed_elements = 10000;
+  const int most_patches = 5000;
   gi::FormFactorSettings hemicube;
   gi::DisplaySettings display;
   display.width = 200;
   display.height = 200;
   double exposure = 1.5;
+  std::string scene_name = "cornell";
+  gi::SceneChanges changes;
+  gi::RadiosityScene scene;
   lesson.add_image_size(display.width, display.height);
+  lesson.add_scene(scene_name, gi::radiosity_scene_names(), [&](const std::string& choice, auto& warnings) {
+    scene = gi::load_radiosity_scene(choice, changes, most_patches, warnings);
+  });
+  lesson.add_scene_changes(changes);
   lesson.options()
-      .add("--patches", patches, "about how many patches to cut the box into", 20, 5000)
+      .add("--patches", patches, "about how many patches to cut the scene into", 20, most_patches)
       .add("--elements-per-side", elements_per_side, "each patch is n x n elements", 1, 8)
       .add("--resolution", hemicube.hemicube_resolution, "hemicube resolution", 10, 1000, gi::even)
       .add("--speed-elements", speed_elements, "elements for the timing to 1% unshot energy", 100, 100000)
@@ -136,11 +146,10 @@ int main(int argc, char** argv) {
     display.threads = lesson.threads();
     display.seed = lesson.seed();
     display.white = 1 / exposure;  // anti-aliased edges on the light (display.hpp)
-    const gi::RadiosityScene scene = gi::cornell_box();
-    const Box box(gi::patch_size_for(scene.surfaces, patches * elements_per_side * elements_per_side, elements_per_side),
+    const Box box(scene, gi::patch_size_for(scene.surfaces, patches * elements_per_side * elements_per_side, elements_per_side),
                   elements_per_side);
     watch_the_shots(box, gi::patch_shooter(box.receivers, box.mesh, hemicube), display, exposure, lesson);
-    time_to_one_percent(speed_elements, hemicube, lesson);
+    time_to_one_percent(scene, speed_elements, hemicube, lesson);
     lesson.say("\nimages: " + lesson.out().string() + "/ (snapshots.png and snapshots_ambient.png: after 1, 2, 24, " +
                "100 shots)");
   });

@@ -251,3 +251,26 @@ TEST(Solvers, ThePatchShooterIsThePatchsFormFactorRow) {
   settings.hemicube_resolution = 21;
   EXPECT_THROW(gi::patch_shooter(receivers, mesh, settings), std::invalid_argument);
 }
+
+TEST(SpectralRadius, IsTheReflectanceOfAFurnace) {
+  // Uniform rho and rows of F that sum to 1: R F = rho F, and a stochastic F has
+  // spectral radius 1.
+  const gi::RadiositySystem s = furnace(6, 0.6, 1.0);
+  const gi::SpectralRadius r = gi::spectral_radius(s, 1);
+  EXPECT_TRUE(r.converged);
+  EXPECT_NEAR(r.value(), 0.6, 1e-7);
+}
+
+TEST(SpectralRadius, TwoFacingPatchesAndARowOfZeros) {
+  // R F = [[0, 0.5], [0.8, 0]] has eigenvalues +-sqrt(0.4): the shift copes with the
+  // pair. A third element that gathers nothing (a row of zeros) changes nothing.
+  gi::RadiositySystem s;
+  s.area = {1, 1, 1};
+  s.rho = {Color(0.5), Color(0.8), Color(0.7)};
+  s.emission = {Color(1), Color(0), Color(0)};
+  s.F = {3, {0, 1, 0, 1, 0, 0, 0, 0, 0}};
+  const gi::SpectralRadius r = gi::spectral_radius(s, 0);
+  EXPECT_TRUE(r.converged);
+  EXPECT_NEAR(r.value(), std::sqrt(0.4), 1e-6);
+  EXPECT_LE(r.lower, std::sqrt(0.4) + 1e-12);
+}

@@ -50,22 +50,29 @@ ShooterRow patch_shooter(const FormFactorScene& receivers, const Mesh& mesh, con
   return [&receivers, &mesh, settings](int p) { return form_factor_row(receivers, mesh.patches[p].shape, p, settings); };
 }
 
+int choose_shooter(const std::vector<Patch>& patches, const std::vector<double>& area,
+                   const std::vector<Color>& unshot) {
+  // BEGIN EXERCISE 11.3 choosing the shooter: the most unshot power
+  int shooter = 0;
+  double most = -1;
+  for (int p = 0; p < static_cast<int>(patches.size()); ++p) {
+    const Patch& patch = patches[p];
+    Color power(0.0);  // sum_e dB_e A_e, per channel
+    for (int e = patch.first_element; e < patch.first_element + patch.element_count; ++e)
+      power += unshot[e] * area[e];
+    const double total = power.x + power.y + power.z;
+    if (total > most) most = total, shooter = p;
+  }
+  return shooter;
+  // END EXERCISE 11.3
+}
+
 SolverResult solve_progressive(const RadiositySystem& s, const Mesh& mesh, const ShooterRow& row,
                                const SolverOptions& options) {
   SolverMonitor monitor("progressive", s, options, true);
   std::vector<Color> B = s.emission, unshot = s.emission;
   for (int step = 1;; ++step) {
-    // The patch with the most unshot power dB_p A_p (summed over the channels).
-    int shooter = 0;
-    double most = -1;
-    for (int p = 0; p < static_cast<int>(mesh.patches.size()); ++p) {
-      const Patch& patch = mesh.patches[p];
-      Color power(0.0);
-      for (int e = patch.first_element; e < patch.first_element + patch.element_count; ++e)
-        power += unshot[e] * s.area[e];
-      const double total = power.x + power.y + power.z;
-      if (total > most) most = total, shooter = p;
-    }
+    const int shooter = choose_shooter(mesh.patches, s.area, unshot);
     shoot(mesh.patches[shooter], row(shooter), s.area, s.rho, B, unshot);
     if (monitor.stop_after(step, B, unshot)) break;
   }

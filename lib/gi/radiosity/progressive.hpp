@@ -44,6 +44,12 @@ Color ambient_term(const std::vector<double>& area, const std::vector<Color>& rh
 std::vector<Color> with_ambient(const std::vector<double>& area, const std::vector<Color>& rho,
                                 const std::vector<Color>& B, const std::vector<Color>& unshot);
 
+// The patch that shoots next: the one with the most unshot power sum_e dB_e A_e over
+// its elements, added over the three channels (the first such patch on a tie). By
+// power, not radiosity: a small bright patch holds less light than a large dim one.
+int choose_shooter(const std::vector<Patch>& patches, const std::vector<double>& area,
+                   const std::vector<Color>& unshot);
+
 // Shoots from the mesh's patches (each the group of its elements; unshot radiosity
 // is kept per element and a patch's is their area-weighted mean) until the unshot
 // energy falls below options.tolerance or max_steps shots. system.F is not used.

@@ -32,4 +32,25 @@ std::vector<Color> residual(const RadiositySystem& system, const std::vector<Col
 // sum_i A_i B_i: the power leaving all elements (per channel).
 Color power(const std::vector<double>& area, const std::vector<Color>& B);
 
+// The spectral radius of R F for one colour channel: the factor by which Jacobi's
+// error shrinks per iteration once the fast modes have died out (so ln(tol) / ln rho
+// iterations to a tolerance tol), and the reason a closed room with rho near 1 takes
+// so long. At most max_i rho_i * (row sum of F)_i: equal to the reflectance in a closed
+// room of uniform rho, less wherever light escapes or is absorbed.
+//
+// Power iteration on R F + I (the shift makes the largest eigenvalue strictly
+// dominant, also for two patches facing each other, whose eigenvalues come in +-
+// pairs). For a positive x, every growth factor (R F x)_i / x_i brackets rho from one
+// side (Collatz-Wielandt): the iteration stops when the smallest and the largest agree
+// to `tolerance`, relative, over the elements x has not died out on (a row of zeros,
+// which nothing reflects into, is left out).
+struct SpectralRadius {
+  double lower = 0, upper = 0;  // the smallest and largest growth factor of the last step
+  int iterations = 0;
+  bool converged = false;
+  double value() const { return 0.5 * (lower + upper); }
+};
+SpectralRadius spectral_radius(const RadiositySystem& system, int channel, double tolerance = 1e-7,
+                               int max_iterations = 20000);
+
 }  // namespace gi

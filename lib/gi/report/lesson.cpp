@@ -10,6 +10,8 @@
 #include "gi/core/atomic_file.hpp"
 #include "gi/core/not_implemented.hpp"
 #include "gi/image/image_io.hpp"
+#include "gi/scene/builtin_scenes.hpp"
+#include "gi/scene/scene_file.hpp"
 
 namespace gi {
 
@@ -21,6 +23,10 @@ namespace fs = std::filesystem;
 int report_failure(const std::string& name, std::string& status) {
   try {
     throw;
+  } catch (const SceneError& e) {  // "file:line:column: path: message" says it all
+    std::cerr << name << ": error: " << e.what() << '\n';
+    status = std::string("bad input: ") + e.what();
+    return 2;
   } catch (const OptionError& e) {
     std::cerr << name << ": error: " << e.what() << " (try --help)\n";
     status = std::string("bad input: ") + e.what();
@@ -72,6 +78,41 @@ void Lesson::add_image_size(int& width, int& height, const std::string& what) {
 }
 
 void Lesson::add_check(std::function<void()> check) { checks_.push_back(std::move(check)); }
+
+void Lesson::add_scene(std::string& choice, const std::vector<std::string>& names, SceneLoader load) {
+  std::string listed;
+  for (const std::string& n : names) listed += (listed.empty() ? "" : ", ") + n;
+  options_.add("--scene", choice, "the scene: a built-in one (" + listed + ") or a scene file NAME.json " +
+                                      "(lessons/scenes/ has examples; docs/scene_files.md)");
+  add_check([this, &choice, load] {
+    std::vector<std::string> warnings;
+    try {
+      load(choice, warnings);
+    } catch (const SceneError&) {
+      throw;
+    } catch (const std::invalid_argument& e) {  // an unknown name, a camera that cannot see
+      throw OptionError(e.what());
+    }
+    for (const std::string& w : warnings) std::cerr << name_ << ": warning: " << w << '\n';
+  });
+}
+
+void Lesson::add_scene(std::string& choice, Scene& scene) {
+  add_scene(choice, scene_names(), [&scene](const std::string& c, std::vector<std::string>& warnings) {
+    scene = load_scene(c, warnings);
+  });
+}
+
+void Lesson::add_scene_changes(SceneChanges& changes) {
+  options_.add_parsed("--camera", "EYE:LOOK_AT[:FOV]",
+                      "look from EYE at LOOK_AT (x,y,z each) with a vertical field of view FOV in degrees; "
+                      "the same solution from a new viewpoint (default: the scene's camera)",
+                      [&changes](const std::string& text) { changes.camera = parse_camera_change(text); });
+  options_.add_parsed("--light-scale", "NAME=FACTOR[,NAME=FACTOR ...]",
+                      "multiply the emission of the named lights (surfaces) by FACTOR: a new light, the same form "
+                      "factors",
+                      [&changes](const std::string& text) { changes.light_scales = parse_light_scales(text); });
+}
 
 void Lesson::prepare_folder() {
   const std::string& text = common_.out;

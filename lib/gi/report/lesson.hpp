@@ -9,7 +9,9 @@
 #include "gi/report/chart.hpp"
 #include "gi/report/options.hpp"
 #include "gi/report/outputs.hpp"
+#include "gi/report/scene_options.hpp"
 #include "gi/report/table.hpp"
+#include "gi/scene/scene.hpp"
 
 namespace gi {
 
@@ -25,7 +27,7 @@ struct LessonFeatures {
 //
 //   gi::Lesson lesson("01_rays", "Ray-sphere and ray-plane intersection ...");
 //   lesson.add_image_size(width, height);
-//   lesson.options().add("--scene", scene, "scene to draw", gi::scene_names());
+//   lesson.add_scene(scene_name, scene);  // --scene
 //   return lesson.run(argc, argv, [&] { ... lesson.table(t, "ray_sphere"); ... });
 class Lesson {
  public:
@@ -38,6 +40,19 @@ class Lesson {
   // A check of the whole configuration (sizes that multiply, option combinations),
   // run after parsing and before any work: throw OptionError to refuse.
   void add_check(std::function<void()> check);
+
+  // --scene NAME|FILE: a built-in scene (`names`, listed in --help) or a scene file
+  // (docs/scene_files.md). `load` reads the choice into the lesson's own scene as a
+  // check, before any work (call add_scene before the checks that look at the scene):
+  // a bad file is refused with status 2 and one line, "file:line:column: path:
+  // message"; the warnings it adds are printed on stderr.
+  using SceneLoader = std::function<void(const std::string& choice, std::vector<std::string>& warnings)>;
+  void add_scene(std::string& choice, const std::vector<std::string>& names, SceneLoader load);
+  // The ray tracer's: a built-in scene (builtin_scenes.hpp) or a file, into `scene`.
+  void add_scene(std::string& choice, Scene& scene);
+  // --camera EYE:LOOK_AT[:FOV] and --light-scale NAME=FACTOR,... into `changes`
+  // (scene_changes.hpp): the radiosity lessons' new viewpoint and light.
+  void add_scene_changes(SceneChanges& changes);
 
   // Parses the command line, runs the checks, makes sure the output folder can be
   // created and written, runs `body`, then checks that every file it wrote is in

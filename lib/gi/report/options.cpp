@@ -6,6 +6,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "gi/core/did_you_mean.hpp"
 #include "gi/report/table.hpp"
 
 namespace gi {
@@ -50,22 +51,6 @@ std::string range_text(T min, T max) {
 template <class T>
 void check_range(const std::string& name, T v, T min, T max, const std::string& text) {
   if (v < min || v > max) throw OptionError(name + " must be in " + range_text(min, max) + ", got " + text);
-}
-
-// Edit distance, to suggest the option a typo meant.
-std::size_t distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
 }
 
 }  // namespace
@@ -137,6 +122,14 @@ Options& Options::add_optional(const std::string& name, std::optional<int>& valu
                      }});
 }
 
+Options& Options::add_parsed(const std::string& name, const std::string& shape, const std::string& help,
+                             std::function<void(const std::string&)> parse) {
+  return add_option({name, help, "", "written " + shape, true, [name, parse](const std::string& t) {
+                       if (t.empty()) throw OptionError(name + " needs a value, got an empty one");
+                       parse(t);
+                     }});
+}
+
 const Options::Option* Options::find(const std::string& name) const {
   for (const Option& o : options_)
     if (o.name == name) return &o;
@@ -159,12 +152,9 @@ bool Options::parse(int argc, const char* const* argv) {
     }
     const Option* option = find(arg);
     if (!option) {
-      std::string message = "unknown option '" + arg + "'";
-      const Option* nearest = nullptr;
-      for (const Option& o : options_)
-        if (!nearest || distance(arg, o.name) < distance(arg, nearest->name)) nearest = &o;
-      if (nearest && distance(arg, nearest->name) <= 3) message += " (did you mean " + nearest->name + "?)";
-      throw OptionError(message);
+      std::vector<std::string> names;
+      for (const Option& o : options_) names.push_back(o.name);
+      throw OptionError("unknown option '" + arg + "'" + did_you_mean(arg, names, ""));
     }
     if (!option->takes_value) {
       if (has_value) throw OptionError(arg + " takes no value");
@@ -191,7 +181,8 @@ std::string Options::help() const {
     const std::string left = o.name + (o.takes_value ? " VALUE" : "");
     os << "  " << left << std::string(width - left.size() + 2, ' ') << o.help;
     if (!o.default_text.empty()) os << " (default " << o.default_text << ")";
-    if (!o.range_text.empty()) os << (o.range_text.rfind("one of", 0) == 0 ? "; " : ", range ") << o.range_text;
+    const bool words = o.range_text.rfind("one of", 0) == 0 || o.range_text.rfind("written", 0) == 0;
+    if (!o.range_text.empty()) os << (words ? "; " : ", range ") << o.range_text;
     os << '\n';
   }
   os << "  --help" << std::string(width - 4, ' ') << "print this help and exit\n";

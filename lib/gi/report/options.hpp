@@ -39,6 +39,10 @@ class Options {
   Options& add_flag(const std::string& name, bool& value, const std::string& help);
   Options& add_optional(const std::string& name, std::optional<int>& value, const std::string& help, int min,
                         int max);
+  // Text of a shape of its own (`shape`, e.g. "EYE:LOOK_AT[:FOV]", shown in --help),
+  // handed to `parse`, which stores it or throws OptionError.
+  Options& add_parsed(const std::string& name, const std::string& shape, const std::string& help,
+                      std::function<void(const std::string&)> parse);
 
   // Returns false after printing the help for --help or -h (the lesson then exits 0).
   // Throws OptionError for an unknown option, a missing or malformed value, or a value

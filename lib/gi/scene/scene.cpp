@@ -1,6 +1,9 @@
 #include "gi/scene/scene.hpp"
 
+#include <cstring>
 #include <stdexcept>
+
+#include "gi/core/hash.hpp"
 
 namespace gi {
 
@@ -74,6 +77,51 @@ void check(const Scene& scene) {
   for (const Triangle& t : scene.triangles) check(t), check_material_index(scene, t.material);
   for (const QuadLight& l : scene.area_lights) check(l.shape);
   (void)camera_frame(scene.camera, 1, 1);  // throws for a degenerate camera
+}
+
+namespace {
+
+// Feeds values to FNV-1a by their bytes (doubles exactly, not as printed).
+struct Digest {
+  std::uint64_t h = fnv1a("");
+  Digest& operator<<(double v) {
+    char bytes[sizeof v];
+    std::memcpy(bytes, &v, sizeof v);
+    h = fnv1a(std::string_view(bytes, sizeof v), h);
+    return *this;
+  }
+  Digest& operator<<(const vec3& v) { return *this << v.x << v.y << v.z; }
+  Digest& operator<<(std::size_t n) { return *this << static_cast<double>(n); }
+  Digest& operator<<(int n) { return *this << static_cast<double>(n); }
+  Digest& operator<<(const std::string& text) {
+    *this << text.size();
+    h = fnv1a(text, h);
+    return *this;
+  }
+};
+
+}  // namespace
+
+std::string fingerprint(const Scene& scene) {
+  Digest d;
+  d << scene.name << scene.background << scene.ambient_light << scene.camera.eye << scene.camera.look_at
+    << scene.camera.up << scene.camera.vertical_fov;
+  for (const Material& m : scene.materials)
+    d << m.name << m.diffuse << m.ambient << m.specular << m.shininess << m.mirror << m.transmission << m.ior
+      << m.emission << m.checker_size << m.checker_diffuse;
+  d << scene.spheres.size();
+  for (const Sphere& s : scene.spheres) d << s.center << s.radius << s.material;
+  d << scene.planes.size();
+  for (const Plane& p : scene.planes) d << p.point << p.normal << p.material;
+  d << scene.quads.size();
+  for (const Quad& q : scene.quads) d << q.corner << q.edge_u << q.edge_v << q.material;
+  d << scene.triangles.size();
+  for (const Triangle& t : scene.triangles) d << t.a << t.b << t.c << t.material;
+  d << scene.lights.size();
+  for (const PointLight& l : scene.lights) d << l.position << l.intensity;
+  d << scene.area_lights.size();
+  for (const QuadLight& l : scene.area_lights) d << l.shape.corner << l.shape.edge_u << l.shape.edge_v << l.intensity;
+  return hex(d.h);
 }
 
 }  // namespace gi

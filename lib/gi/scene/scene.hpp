@@ -44,4 +44,9 @@ struct Scene {
 // assembled by hand rather than through the adders).
 void check(const Scene& scene);
 
+// A digest of every value in the scene (FNV-1a, 16 hex digits): scenes with the same
+// fingerprint render the same. It names the scene in a cached reference's key, so an
+// edited scene file is rendered again.
+std::string fingerprint(const Scene& scene);
+
 }  // namespace gi

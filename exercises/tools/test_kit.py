@@ -1,0 +1,178 @@
+"""make-kit and the grader's results file under bad destinations, a full disk and a
+kill in the middle (ctest: exercise_tools). A full disk and a read-only folder are
+made with small tmpfs mounts; where mounting is not allowed those tests are skipped
+with a message.
+"""
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import kit      # noqa: E402
+import regions  # noqa: E402
+
+ROOT = Path(__file__).resolve().parents[2]
+MAKE_KIT = [sys.executable, str(ROOT / "exercises" / "make-kit")]
+
+SOURCE = """#include "gi/core/not_implemented.hpp"
+double twice(double x) {
+  // BEGIN EXERCISE 3.1 doubling
+  const double doubled_value = x + x;
+  return doubled_value;
+  // END EXERCISE 3.1
+}
+"""
+
+
+def small_tree(doc_text="Nothing to see.\n"):
+    """A made-up project with one exercise, outside git."""
+    root = Path(tempfile.mkdtemp())
+    (root / "lib").mkdir()
+    (root / "docs").mkdir()
+    (root / "exercises" / "lab03" / "hidden").mkdir(parents=True)
+    (root / "exercises" / "mutants").mkdir()
+    (root / "lib" / "twice.cpp").write_text(SOURCE)
+    (root / "docs" / "page.md").write_text(doc_text)
+    (root / "exercises" / "lab03" / "twice_test.cpp").write_text("TEST(Ex3_1_Twice, Two) {}\n")
+    (root / "exercises" / "lab03" / "hidden" / "secret_test.cpp").write_text("TEST(Ex3_1_Secret, Three) {}\n")
+    (root / "exercises" / "mutants" / "lab03.mut").write_text("# mutants\n")
+    return root
+
+
+class Mount:
+    """A tmpfs of `size` at a new folder, read-only if asked; None where not allowed."""
+
+    def __init__(self, options):
+        self.folder = Path(tempfile.mkdtemp())
+        done = subprocess.run(["mount", "-t", "tmpfs", "-o", options, "tmpfs", str(self.folder)], capture_output=True)
+        self.mounted = done.returncode == 0
+
+    def close(self):
+        if self.mounted:
+            subprocess.run(["umount", str(self.folder)], capture_output=True)
+        os.rmdir(self.folder)
+
+
+class Destinations(unittest.TestCase):
+    def make_kit(self, *args):
+        done = subprocess.run(MAKE_KIT + list(args), capture_output=True, text=True, timeout=300)
+        self.assertNotIn("Traceback", done.stderr)
+        return done
+
+    def assert_refused(self, done, status=2):
+        self.assertEqual(done.returncode, status, done.stdout + done.stderr)
+        self.assertEqual(len(done.stderr.strip().splitlines()), 1, done.stderr)
+
+    def test_refuses_empty_and_unknown_lab_lists(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            for labs in (",", "", " , ", "99", "one"):
+                self.assert_refused(self.make_kit(f"{tmp}/kit", "--labs", labs))
+                self.assertFalse(Path(f"{tmp}/kit").exists(), f"--labs '{labs}' made a kit")
+
+    def test_refuses_the_repository_its_parent_and_folders_inside_it(self):
+        for dest in (ROOT, ROOT.parent, ROOT / "lib" / "kit"):
+            self.assert_refused(self.make_kit(str(dest), "--force"))
+
+    def test_refuses_a_file_and_a_folder_that_is_not_empty(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            Path(f"{tmp}/file").write_text("x")
+            self.assert_refused(self.make_kit(f"{tmp}/file"))
+            Path(f"{tmp}/full").mkdir()
+            Path(f"{tmp}/full/keep").write_text("x")
+            self.assert_refused(self.make_kit(f"{tmp}/full"))
+            self.assertEqual(Path(f"{tmp}/full/keep").read_text(), "x")
+
+    def test_read_only_destination(self):
+        mount = Mount("ro,size=64k")
+        try:
+            if not mount.mounted:
+                self.skipTest("cannot mount a read-only tmpfs here (needs root)")
+            done = self.make_kit(str(mount.folder / "kit"), "--labs", "1")
+            self.assert_refused(done, 1)
+            self.assertIn("Read-only", done.stderr)
+        finally:
+            mount.close()
+
+    def test_full_disk_leaves_no_kit(self):
+        mount = Mount("size=256k")
+        try:
+            if not mount.mounted:
+                self.skipTest("cannot mount a small tmpfs here (needs root)")
+            done = self.make_kit(str(mount.folder / "kit"), "--labs", "1")
+            self.assert_refused(done, 1)
+            self.assertIn("No space left", done.stderr)
+            self.assertEqual(list(mount.folder.iterdir()), [], "a failed kit must leave nothing behind")
+        finally:
+            mount.close()
+
+    def test_killed_runs_never_leave_a_kit_with_solutions(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            dest = Path(tmp) / "kit"
+            for delay in (0.3, 0.6, 1.0):
+                run = subprocess.Popen(MAKE_KIT + [str(dest), "--labs", "1"], stdout=subprocess.DEVNULL,
+                                       stderr=subprocess.DEVNULL)
+                time.sleep(delay)
+                run.send_signal(signal.SIGKILL)
+                run.wait()
+                if dest.exists():  # it finished before the kill: then it is a whole, checked kit
+                    self.assertTrue((dest / "exercises" / "KIT").is_file())
+                    self.assertIn("throw gi::NotImplemented", (dest / "lib/gi/geometry/sphere.cpp").read_text())
+                    break
+            done = self.make_kit(str(dest), "--labs", "1", "--force")
+            self.assertEqual(done.returncode, 0, done.stderr)
+            self.assertEqual([p.name for p in Path(tmp).iterdir()], ["kit"], "stale partial kits are cleaned up")
+
+
+class Contents(unittest.TestCase):
+    def test_instructor_files_stay_behind_and_the_kit_records_its_labs(self):
+        root = small_tree()
+        with tempfile.TemporaryDirectory() as tmp:
+            kit.make_kit(root, Path(tmp) / "kit", "3")
+            made = Path(tmp) / "kit"
+            self.assertEqual((made / "exercises" / "KIT").read_text(), "3.1 doubling\n")
+            self.assertTrue((made / "exercises" / "lab03" / "twice_test.cpp").is_file())
+            self.assertFalse((made / "exercises" / "lab03" / "hidden").exists())
+            self.assertFalse((made / "exercises" / "mutants").exists())
+            self.assertNotIn("doubled_value", (made / "lib" / "twice.cpp").read_text())
+
+    def test_a_solution_left_in_the_docs_stops_the_kit(self):
+        root = small_tree("Try: `const double doubled_value = x + x;`\n\n    return doubled_value;\n")
+        with tempfile.TemporaryDirectory() as tmp:
+            with self.assertRaisesRegex(kit.KitError, r"solution text of exercise 3.1 left at docs/page.md:3"):
+                kit.make_kit(root, Path(tmp) / "kit", "all")
+            self.assertEqual(list(Path(tmp).iterdir()), [], "no kit, and no partial kit, is left")
+
+    def test_lab_lists(self):
+        self.assertEqual(regions.parse_labs("all", {1, 2}), {1, 2})
+        self.assertEqual(regions.parse_labs(None, {1, 2}), {1, 2})
+        self.assertEqual(regions.parse_labs("2", {1, 2}), {2})
+        for bad in (",", "", "1,7", "one"):
+            with self.assertRaises(regions.RegionError):
+                regions.parse_labs(bad, {1, 2})
+
+
+class ResultsFile(unittest.TestCase):
+    def test_a_full_disk_gives_one_line_and_no_half_written_results(self):
+        mount = Mount("size=12k")
+        try:
+            if not mount.mounted:
+                self.skipTest("cannot mount a small tmpfs here (needs root)")
+            (mount.folder / "filler").write_bytes(b"x" * 8192)
+            import grade
+            temp = grade.open_json(str(mount.folder / "results.json"))
+            with self.assertRaises(Exception) as caught:
+                grade.write_json(temp, mount.folder / "results.json", {"tests": ["x" * 200] * 100})
+            self.assertIn("No space left", str(caught.exception))
+            self.assertFalse((mount.folder / "results.json").exists())
+            self.assertEqual(sorted(p.name for p in mount.folder.iterdir()), ["filler"])
+        finally:
+            mount.close()
+
+
+if __name__ == "__main__":
+    unittest.main()
