@@ -1,6 +1,8 @@
 #include "gi/radiosity/hierarchical/hierarchy.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace gi {
 
@@ -46,6 +48,21 @@ void split(Hierarchy& h, int index) {
     h.nodes.push_back(std::move(child));  // may move the nodes: `parent` is looked up again each time
   }
   for (int k = 0; k < 4; ++k) h.nodes[index].children[k] = first + k;
+}
+
+int leaf_containing(const Hierarchy& h, int surface, double s, double t) {
+  if (surface < 0 || surface >= static_cast<int>(h.surfaces.size()))
+    throw std::invalid_argument("hierarchy: no surface " + std::to_string(surface));
+  s = std::clamp(s, 0.0, 1.0), t = std::clamp(t, 0.0, 1.0);
+  int n = surface;
+  while (!h.nodes[n].leaf()) {
+    // The child's half in each direction: the next binary digit of s and t.
+    const double scale = static_cast<double>(2LL << h.nodes[n].level);
+    const int x = std::min(static_cast<int>(s * scale), 2 * h.nodes[n].i + 1) - 2 * h.nodes[n].i;
+    const int y = std::min(static_cast<int>(t * scale), 2 * h.nodes[n].j + 1) - 2 * h.nodes[n].j;
+    n = h.nodes[n].children[std::clamp(x, 0, 1) + 2 * std::clamp(y, 0, 1)];
+  }
+  return n;
 }
 
 std::vector<int> leaves(const Hierarchy& h) {

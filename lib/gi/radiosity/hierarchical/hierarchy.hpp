@@ -53,6 +53,12 @@ void split(Hierarchy& hierarchy, int node);
 // The point (u, v) in [0, 1]^2 of a node, on its surface's bilinear map.
 vec3 node_point(const Hierarchy& hierarchy, const Node& node, double u, double v);
 
+// The leaf of surface `surface` that holds the point (s, t) of the surface's
+// parameter square (bilinear's), found by walking down from the root: at level l the
+// child is picked by the l-th binary digit of s and t. Throws std::invalid_argument
+// for a surface out of range; s and t are clamped into [0, 1].
+int leaf_containing(const Hierarchy& hierarchy, int surface, double s, double t);
+
 // The leaves, surface by surface, each quadtree depth first: the mesh that is shown.
 std::vector<int> leaves(const Hierarchy& hierarchy);
 std::size_t link_count(const Hierarchy& hierarchy);
