@@ -26,6 +26,7 @@ struct Setup {
   gi::HierarchicalSettings settings;
   double exposure = 1.5;
   int threads = 2;
+  int uniform_elements = 1500;  // the finest uniform mesh; also a tenth and a third of it
 };
 
 // Error of a picture against the reference picture: relative RMS over 4 x 4 blocks away
@@ -92,7 +93,7 @@ void uniform_meshes(const Setup& s, const gi::ReferencePicture& reference, gi::C
   gi::Table table("Uniform meshes (hemicube 100), to residual 1e-3; error against the same reference picture",
                   {{"elements"}, {"method"}, {"s", 2}, {"error", 3}});
   gi::Series gauss{"uniform, Gauss-Seidel", {}, {}}, shooting{"uniform, progressive", {}, {}};
-  for (const int elements : {150, 500, 1500}) {
+  for (const int elements : {s.uniform_elements / 10, s.uniform_elements / 3, s.uniform_elements}) {
     const gi::Timer timer;
     const gi::Mesh mesh = gi::make_mesh(s.scene.surfaces, {gi::patch_size_for(s.scene.surfaces, elements, 1), 1});
     const gi::FormFactorScene receivers(gi::element_shapes(mesh));
@@ -227,6 +228,7 @@ int main(int argc, char** argv) {
       .add("--f-threshold", s.settings.refinement.form_factor_threshold, "F_eps of the first round", 1e-4, 10.0)
       .add("--min-area", s.settings.refinement.min_area, "no node below this fraction of the scene's area", 1e-7, 0.1)
       .add("--reference-elements", s.reference.elements, "uniform mesh of the reference's indirect light", 50, 20000)
+      .add("--uniform-elements", s.uniform_elements, "the finest uniform mesh of the error-against-time chart", 100, 20000)
       .add("--exposure", s.exposure, "multiplies the radiance before display", 0.01, 100.0)
       .add_flag("--skip-studies", skip_studies, "only the thresholds (no uniform meshes, failures or relighting)");
   return lesson.run(argc, argv, [&] {

@@ -22,7 +22,8 @@ using gi_test::run;
 const char* const lessons[] = {"01_rays",         "02_recursive",        "03_antialiasing",
                                "04_soft_shadows", "05_acceleration",     "06_form_factors",
                                "07_hemicube",     "08_radiosity_system", "09_jacobi_gauss_seidel",
-                               "10_southwell",    "11_progressive",      "12_solver_showdown"};
+                               "10_southwell",    "11_progressive",      "12_solver_showdown",
+                               "13_hierarchical"};
 const char* const rendering[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows"};
 // Lessons offer --seed only if they draw random numbers, --threads only if they use threads.
 const char* const without_seed[] = {"01_rays", "02_recursive", "09_jacobi_gauss_seidel", "10_southwell"};
@@ -193,6 +194,22 @@ TEST(Lessons, SolverShowdownDetectsDivergence) {
   for (const char* file : {"showdown.csv", "error_vs_time.svg", "error_vs_work.svg", "stability.csv", "precision.csv",
                            "bandwidth.csv"})
     EXPECT_TRUE(fs::exists(out_dir("12") + "/" + file)) << file;
+}
+
+TEST(Lessons, HierarchicalWritesItsTablesAndRefusesBadThresholds) {
+  const LessonRun r = run("13_hierarchical", "--width 32 --height 32 --reference-elements 100 --uniform-elements 150 --min-area 1e-3 --out " +
+                                                 out_dir("13"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("linear in E"), std::string::npos) << r.output;
+  for (const char* file : {"thresholds.csv", "rounds.csv", "uniform.csv", "stability.csv", "relight.csv", "leaves.png",
+                           "leaves.ply", "links.svg", "error_time.svg", "reference.pfm"})
+    EXPECT_TRUE(fs::exists(out_dir("13") + "/" + file)) << file;
+  for (const char* args : {"--threshold 0", "--min-area 1", "--f-threshold nan", "--reference-elements 10"}) {
+    const LessonRun bad = run("13_hierarchical", args);
+    EXPECT_EQ(bad.status, 2) << args;
+    EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << args << ":\n" << bad.output;
+  }
 }
 
 TEST(Lessons, SameBytesForAnyThreadCount) {
