@@ -9,6 +9,7 @@
 #include "gi/core/rng.hpp"
 #include "gi/raytrace/pixel_samplers.hpp"
 #include "support/print.hpp"
+#include "support/statistics.hpp"
 
 namespace {
 
@@ -78,22 +79,20 @@ TEST(Ex3_1_Jittered, XAndYOffsetsAreIndependent) {
 }
 
 TEST(Ex3_1_Jittered, OffsetsAreUniformInTheCell) {
-  // Chi-square on a 10 x 10 histogram of the in-cell offsets: 99 degrees of freedom,
-  // critical value 148.2 at p = 0.001 -- a correct sampler fails one time in a thousand
-  // seeds, and this seed is fixed.
+  // Chi-square on a 10 x 10 histogram of the in-cell offsets (tests/support/statistics.hpp)
+  // at p = 0.001 -- a correct sampler fails one time in a thousand seeds, and this seed
+  // is fixed.
+  namespace t = gi::testing;
   gi::Rng rng(12);
   const int bins = 10, n = 3, trials = 1200;
-  std::vector<int> histogram(bins * bins, 0);
+  std::vector<gi::vec2> offsets;
   for (int trial = 0; trial < trials; ++trial)
-    for (const gi::vec2& p : gi::jittered_positions(n, rng)) {
-      const gi::vec2 o = offset_in_cell(p, n);
-      ++histogram[std::min(bins - 1, static_cast<int>(o.y * bins)) * bins + std::min(bins - 1, int(o.x * bins))];
-    }
-  const double expected = double(trials * n * n) / (bins * bins);
-  double chi2 = 0;
-  for (int count : histogram) chi2 += (count - expected) * (count - expected) / expected;
-  EXPECT_LT(chi2, 148.2) << "the offsets inside each cell are not uniform (chi-square " << chi2
-                         << "): use one rng.uniform() per coordinate, scaled into the cell";
+    for (const gi::vec2& p : gi::jittered_positions(n, rng)) offsets.push_back(offset_in_cell(p, n));
+  const t::ChiSquare c = t::chi_square_test(
+      t::histogram_2d(offsets, {0, 0}, {1, 1}, bins, bins),
+      t::expected_2d([](gi::vec2) { return 1.0; }, {0, 0}, {1, 1}, bins, bins, double(offsets.size())));
+  EXPECT_GT(c.p_value, 0.001) << "the offsets inside each cell are not uniform (chi-square " << c.statistic
+                              << "): use one rng.uniform() per coordinate, scaled into the cell";
 }
 
 TEST(Ex3_1_Jittered, EveryCallDrawsNewOffsets) {

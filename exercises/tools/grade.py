@@ -156,6 +156,10 @@ def one_by_one(binary, names, limit):
 
 
 class OneLineParser(argparse.ArgumentParser):
+    # No abbreviations: '--build' must not quietly mean '--build-dir' and start a build there.
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, allow_abbrev=False, **kwargs)
+
     def error(self, message):
         raise UsageError(message)
 

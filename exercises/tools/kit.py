@@ -157,6 +157,10 @@ def make_kit(root, dest, labs_spec, force=False):
 
 
 class OneLineParser(argparse.ArgumentParser):
+    # No abbreviations: '--build' must not quietly mean '--build-dir' and start a build there.
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, allow_abbrev=False, **kwargs)
+
     def error(self, message):
         raise UsageError(f"{message} (try --help)")
 

@@ -196,7 +196,7 @@ def prepare(work, labs):
 
 
 def main(argv):
-    parser = argparse.ArgumentParser(prog="mutants", description="Plant student bugs; check the graded tests fail.")
+    parser = argparse.ArgumentParser(prog="mutants", allow_abbrev=False, description="Plant student bugs; check the graded tests fail.")
     parser.add_argument("files", nargs="*", help=".mut files (default: exercises/mutants/*.mut)")
     parser.add_argument("--work", default=str(ROOT / "build" / "mutants"), help="copy of the tree and its build")
     parser.add_argument("--only", help="mutant names or exercise ids, comma-separated")

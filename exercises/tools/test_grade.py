@@ -223,7 +223,8 @@ class CommandLine(unittest.TestCase):
 
     def test_refuses_bad_options(self):
         for args in (["--labs", ","], ["--labs", ""], ["--labs", "1,99"], ["--labs", "x"], ["--timeout", "nan"],
-                     ["--timeout", "-1"], ["--timeout", "inf"], ["--timeout", "0"], ["--bogus"]):
+                     ["--timeout", "-1"], ["--timeout", "inf"], ["--timeout", "0"], ["--bogus"],
+                     ["--build", "/nonexistent"], ["--time", "5"]):  # no abbreviations: --build is not --build-dir
             self.assert_one_line_error(self.grade(*args), 2)
 
     def test_refuses_a_json_path_it_cannot_write_before_grading(self):

@@ -23,8 +23,8 @@ const char* const lessons[] = {"01_rays",         "02_recursive",        "03_ant
                                "04_soft_shadows", "05_acceleration",     "06_form_factors",
                                "07_hemicube",     "08_radiosity_system", "09_jacobi_gauss_seidel",
                                "10_southwell",    "11_progressive",      "12_solver_showdown",
-                               "13_hierarchical"};
-const char* const rendering[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows"};
+                               "13_hierarchical", "14_path_tracing"};
+const char* const rendering[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows", "14_path_tracing"};
 // Lessons offer --seed only if they draw random numbers, --threads only if they use threads.
 const char* const without_seed[] = {"01_rays", "02_recursive", "09_jacobi_gauss_seidel", "10_southwell"};
 const char* const without_threads[] = {"06_form_factors"};
@@ -222,4 +222,54 @@ TEST(Lessons, SameBytesForAnyThreadCount) {
   ASSERT_FALSE(one.empty());
   EXPECT_EQ(bytes(out_dir("threads2") + "/s10_depth_8.png"), one);
   EXPECT_EQ(bytes(out_dir("threads5") + "/s10_depth_8.png"), one);
+}
+
+TEST(Lessons, PathTracingWritesPicturesTablesAndChartTheSameForAnyThreadCount) {
+  // 32 x 32 divides the Cornell box reference kept in the tree (256 x 256): it is read and
+  // averaged down, not rendered.
+  for (const char* threads : {"1", "3"}) {
+    const LessonRun r = run("14_path_tracing", std::string("--width 32 --height 32 --max-spp 8 --threads ") + threads +
+                                                   " --out " + out_dir(std::string("14_threads") + threads));
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("convergence study"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("rendering a reference"), std::string::npos) << "the tree's reference was not used";
+    EXPECT_NE(r.output.find("furnace"), std::string::npos);
+  }
+  for (const char* file : {"cornell_1spp.png", "cornell_1spp.pfm", "cornell_4spp.pfm", "relative_error_8spp.png",
+                           "progression.png", "reference.pfm", "monte_carlo.csv", "pictures.csv", "strategies.csv",
+                           "error_vs_time.svg", "outputs.json"})
+    EXPECT_TRUE(fs::exists(out_dir("14_threads1") + "/" + file)) << file;
+  check_pictures(out_dir("14_threads1"), 3);
+  const std::string one = bytes(out_dir("14_threads1") + "/cornell_4spp.pfm");
+  ASSERT_FALSE(one.empty());
+  EXPECT_EQ(bytes(out_dir("14_threads3") + "/cornell_4spp.pfm"), one);
+  // Another scene renders its own reference and keeps it for the next run.
+  const std::string soft = "--scene soft --width 24 --height 16 --max-spp 2 --reference-spp 16 --out " +
+                           out_dir("14_soft");
+  fs::remove_all(out_dir("14_soft"));
+  const LessonRun first = run("14_path_tracing", soft);
+  ASSERT_EQ(first.status, 0) << first.output;
+  EXPECT_NE(first.output.find("rendering a reference"), std::string::npos);
+  EXPECT_EQ(run("14_path_tracing", soft).output.find("rendering a reference"), std::string::npos)
+      << "the second run reads the reference the first one kept";
+  EXPECT_EQ(run("14_path_tracing", "--max-spp 0").status, 2);
+}
+
+TEST(Lessons, PathTracingRefusesAMissingOrForeignReferenceBeforeAnyWork) {
+  // The stored Cornell box reference is the truth every error is measured against: one
+  // that is missing, or was made for another scene (a small one of the soft-shadow scene,
+  // made here by 14_make_reference), stops the lesson in one line, before it writes anything.
+  const LessonRun made = run("14_make_reference", "--scene soft --width 16 --height 16 --batch-spp 2 --out " +
+                                                      out_dir("14_foreign"));
+  ASSERT_EQ(made.status, 0) << made.output;
+  for (const std::string& stem : {out_dir("14_nowhere") + "/cornell_256x256", out_dir("14_foreign") + "/soft_16x16"}) {
+    const std::string folder = out_dir("14_refused");
+    fs::remove_all(folder);
+    const LessonRun r = run("14_path_tracing", "--width 32 --height 32 --max-spp 2 --reference " + stem + " --out " + folder);
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find("14_path_tracing: error: the Cornell box reference cannot be used"), std::string::npos)
+        << r.output;
+    EXPECT_FALSE(fs::exists(folder)) << "the lesson started work before refusing its reference";
+  }
 }

@@ -30,6 +30,14 @@ fs::path bad_input(const std::string& name, const std::string& text) {
 
 std::size_t lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
 
+// Runs a lesson that must succeed. Its output goes into the failure message, so in a
+// student kit a lesson stopped by an exercise still to be written is reported as
+// skipped ("... is not implemented yet"), not failed.
+void must_run(const std::string& lesson, const std::string& args) {
+  const LessonRun result = run(lesson, args);
+  ASSERT_EQ(result.status, 0) << lesson << " " << args << "\n" << result.output;
+}
+
 }  // namespace
 
 TEST(SceneOption, EveryRenderingLessonTakesASceneFile) {
@@ -62,16 +70,16 @@ TEST(SceneOption, AFileRendersTheBytesOfItsBuiltInTwin) {
   for (const std::string name : {"whitted", "soft"}) {
     const std::string built_in = out_dir("twin_" + name), file = out_dir("twin_file_" + name);
     const std::string size = " --width 48 --height 32 --out ";
-    ASSERT_EQ(run("01_rays", "--scene " + name + size + built_in).status, 0);
-    ASSERT_EQ(run("01_rays", "--scene " + scene(name + ".json") + size + file).status, 0);
+    ASSERT_NO_FATAL_FAILURE(must_run("01_rays", "--scene " + name + size + built_in));
+    ASSERT_NO_FATAL_FAILURE(must_run("01_rays", "--scene " + scene(name + ".json") + size + file));
     for (const char* picture : {"/normals.pfm", "/hit_or_miss.pfm"})
       EXPECT_EQ(bytes(built_in + picture), bytes(file + picture)) << name << picture;
   }
   // Radiosity: the Cornell box built in and from its file, at a new viewpoint.
   const std::string args = " --elements 40 --resolution 10 --width 24 --height 24 --bounces 1 "
                            "--camera 100,500,-400:278,200,280:50 --out ";
-  ASSERT_EQ(run("08_radiosity_system", "--scene cornell" + args + out_dir("twin_cornell")).status, 0);
-  ASSERT_EQ(run("08_radiosity_system", "--scene " + scene("cornell.json") + args + out_dir("twin_file_cornell")).status, 0);
+  ASSERT_NO_FATAL_FAILURE(must_run("08_radiosity_system", "--scene cornell" + args + out_dir("twin_cornell")));
+  ASSERT_NO_FATAL_FAILURE(must_run("08_radiosity_system", "--scene " + scene("cornell.json") + args + out_dir("twin_file_cornell")));
   EXPECT_EQ(bytes(out_dir("twin_cornell") + "/solution.pfm"), bytes(out_dir("twin_file_cornell") + "/solution.pfm"));
 }
 
@@ -79,8 +87,8 @@ TEST(SceneOption, ANewLightKeepsTheViewAndScalesThePicture) {
   // Twice the light is twice the radiance everywhere (the system is linear, and the
   // display averages the same eye rays): every pixel of the PFM doubles.
   const std::string args = "--elements 40 --resolution 10 --width 16 --height 16 --bounces 1 --out ";
-  ASSERT_EQ(run("08_radiosity_system", args + out_dir("light_1")).status, 0);
-  ASSERT_EQ(run("08_radiosity_system", "--light-scale light=2 " + args + out_dir("light_2")).status, 0);
+  ASSERT_NO_FATAL_FAILURE(must_run("08_radiosity_system", args + out_dir("light_1")));
+  ASSERT_NO_FATAL_FAILURE(must_run("08_radiosity_system", "--light-scale light=2 " + args + out_dir("light_2")));
   const gi::Image one = gi::read_pfm(out_dir("light_1") + "/solution.pfm"), two = gi::read_pfm(out_dir("light_2") + "/solution.pfm");
   ASSERT_TRUE(one.same_size(two));
   for (std::size_t i = 0; i < one.pixels.size(); ++i) EXPECT_EQ(two.pixels[i], 2.0f * one.pixels[i]) << "pixel " << i;

@@ -7,13 +7,21 @@
 #include <fstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "gi/scene/scene_file.hpp"
 
 namespace gi_test {
 
 // A folder of its own under the test's temporary directory, empty.
+// ctest runs tests in parallel processes (and other build trees may be testing at the
+// same time), so the folder is named by the process and the running test as well:
+// two tests sharing a name such as "error" must not wipe each other's files.
 inline std::filesystem::path scratch_folder(const std::string& name) {
-  const std::filesystem::path folder = std::filesystem::path(testing::TempDir()) / "gi_scene_files" / name;
+  const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
+  const std::string owner = std::to_string(::getpid()) + "_" +
+                            (test ? std::string(test->test_suite_name()) + "." + test->name() : "none");
+  const std::filesystem::path folder = std::filesystem::path(testing::TempDir()) / "gi_scene_files" / owner / name;
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
   return folder;

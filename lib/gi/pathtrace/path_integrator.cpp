@@ -1,0 +1,100 @@
+#include "gi/pathtrace/path_integrator.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "gi/pathtrace/next_event.hpp"
+#include "gi/pathtrace/roulette.hpp"
+
+namespace gi {
+
+namespace {
+
+// How far a new ray starts off its surface, along the normal on the side it leaves
+// from: relative to the coordinates' size, so that round-off in the hit point cannot
+// put the origin behind the surface (Cornell box in mm, furnace in m alike).
+vec3 offset_origin(const vec3& point, const vec3& n, const vec3& direction) {
+  const double scale = 1 + std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+  return point + (dot(direction, n) > 0 ? 1e-9 : -1e-9) * scale * n;
+}
+
+// Is nothing between x (leaving along n's side) and the light point y?
+bool unoccluded(const World& world, const vec3& x, const vec3& n, const vec3& y) {
+  const vec3 origin = offset_origin(x, n, y - x);
+  const vec3 to_light = y - origin;
+  const double distance = length(to_light);
+  const double scale = 1 + std::max({std::abs(y.x), std::abs(y.y), std::abs(y.z)});
+  return !any_hit(world, Ray{origin, to_light / distance, 0.0, distance - 1e-9 * scale});
+}
+
+}  // namespace
+
+void check(const PathSettings& s) {
+  if (s.max_depth < 0 || s.max_depth > 100000)
+    throw std::invalid_argument("path tracer: the depth limit must lie in [0, 100000], got " +
+                                std::to_string(s.max_depth));
+  if (s.roulette_depth < 0)
+    throw std::invalid_argument("path tracer: the roulette depth must be >= 0, got " +
+                                std::to_string(s.roulette_depth));
+}
+
+Color path_radiance(const PathScene& scene, const Ray& camera_ray, const PathSettings& settings, Rng& rng) {
+  const Scene& s = scene.scene();
+  const Lights& lights = scene.lights;
+  const bool sample_lights = settings.strategy != Strategy::Bsdf && !lights.lights.empty();
+  Color L(0.0), beta(1.0);
+  Ray ray = camera_ray;
+  bool after_specular = true;  // the camera ray counts as specular: nothing else can see its light
+  double p_bsdf = 0;           // density of the direction the last bounce chose
+  vec3 previous(0.0);          // where that bounce was
+  for (int bounce = 0;; ++bounce) {
+    const std::optional<Hit> hit = closest_hit(scene.world, ray);
+    if (!hit) {  // the sky: no light sample finds it, so BSDF rays count it in every strategy
+      L += beta * s.background;
+      break;
+    }
+    const Material& material = s.materials[hit->material];
+    const vec3 wo = -ray.direction;
+    const vec3& n = hit->normal;
+
+    // ---- Emission found by this ray -------------------------------------------------
+    if (const int k = lights.of_material[hit->material]; k >= 0 && dot(n, wo) > 0) {
+      double w_bsdf = 1.0;
+      if (!after_specular) {
+        const double p_light = area_to_solid_angle(light_pdf_area(lights, s, k, previous), hit->t * hit->t, dot(n, wo));
+        w_bsdf = bsdf_sample_weight(settings.strategy, p_bsdf, p_light);
+      }
+      L += beta * material.emission * w_bsdf;
+    }
+    if (bounce == settings.max_depth) break;
+    const Bsdf bsdf = bsdf_at(material, hit->point);
+
+    // ---- Next-event estimation: a shadow ray to a point on a light -------------------
+    if (sample_lights && !is_specular(bsdf)) {
+      const double u_choice = rng.uniform();
+      const vec2 u(rng.uniform(), rng.uniform());
+      const LightSample y = sample_light(lights, s, hit->point, u_choice, u);
+      const DirectSample direct = next_event_estimate(bsdf, hit->point, n, wo, y);
+      if (max_component(direct.estimate) > 0 && unoccluded(scene.world, hit->point, n, y.point)) {
+        const double w_light = light_sample_weight(settings.strategy, direct.p_light, bsdf_pdf(bsdf, n, wo, direct.wi));
+        L += beta * direct.estimate * w_light;
+      }
+    }
+
+    // ---- BSDF sampling: where the path goes next ------------------------------------
+    const vec2 u(rng.uniform(), rng.uniform());
+    const std::optional<BsdfSample> next = sample_bsdf(bsdf, n, wo, u, rng.uniform());
+    if (!next || max_component(next->weight) <= 0) break;
+    beta *= next->weight;
+    after_specular = next->specular;
+    p_bsdf = next->pdf;
+    previous = hit->point;
+    ray = Ray{offset_origin(hit->point, n, next->wi), next->wi};
+
+    // ---- Possibly terminate the path with Russian roulette ---------------------------
+    if (bounce + 1 >= settings.roulette_depth && !russian_roulette(beta, rng.uniform())) break;
+  }
+  return L;
+}
+
+}  // namespace gi

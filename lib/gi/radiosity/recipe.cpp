@@ -1,0 +1,115 @@
+#include "gi/radiosity/recipe.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "gi/core/timer.hpp"
+#include "gi/radiosity/progressive.hpp"
+#include "gi/radiosity/solvers.hpp"
+
+namespace gi {
+
+std::string name(RecipeSolver solver) {
+  switch (solver) {
+    case RecipeSolver::Direct: return "direct";
+    case RecipeSolver::Jacobi: return "Jacobi";
+    case RecipeSolver::GaussSeidel: return "Gauss-Seidel";
+    case RecipeSolver::Southwell: return "Southwell";
+    case RecipeSolver::Progressive: return "progressive";
+  }
+  return "?";
+}
+
+std::string describe(const Recipe& r) {
+  const std::string ff = name(r.form_factors.method);
+  const std::string light = r.exact_direct ? "exact direct + " + ff + " indirect" : ff + " for all light";
+  return light + ", " + name(r.solver);
+}
+
+int hemicube_resolution_for(const Mesh& mesh) {
+  double area = 0;
+  vec3 lo(1e300), hi(-1e300);
+  for (const Element& e : mesh.elements) {
+    area += e.shape.area;
+    for (const vec3& c : e.shape.corners) lo = min(lo, c), hi = max(hi, c);
+  }
+  const double side = std::sqrt(area / double(mesh.elements.size())), size = length(hi - lo) / std::sqrt(3.0);
+  const int cells = static_cast<int>(std::ceil(4 * size / side));
+  return std::clamp(cells + cells % 2, 100, 1000);
+}
+
+namespace {
+
+SolverResult run_solver(const RadiositySystem& system, const Mesh& mesh, const ShooterRow& row, const Recipe& r) {
+  SolverOptions options;
+  options.tolerance = r.tolerance;
+  options.max_steps = r.solver == RecipeSolver::Southwell || r.solver == RecipeSolver::Progressive
+                          ? 1000 * system.size()
+                          : 100000;
+  options.record_every = r.solver == RecipeSolver::Southwell ? std::max(1, system.size() / 4) : 1;
+  switch (r.solver) {
+    case RecipeSolver::Direct: return solve_direct(system, options);
+    case RecipeSolver::Jacobi: return solve_jacobi(system, options);
+    case RecipeSolver::GaussSeidel: return solve_gauss_seidel(system, options);
+    case RecipeSolver::Southwell: return solve_southwell(system, options);
+    case RecipeSolver::Progressive: return solve_progressive(system, mesh, row, options);
+  }
+  throw std::invalid_argument("solve_recipe: unknown solver");
+}
+
+}  // namespace
+
+RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe) {
+  RecipeResult result;
+  result.mesh = make_mesh(surfaces, {patch_size_for(surfaces, recipe.elements, recipe.elements_per_side),
+                                     recipe.elements_per_side});
+  const Mesh& mesh = result.mesh;
+  Recipe r = recipe;
+  if (r.form_factors.method == FormFactorMethod::Hemicube && r.form_factors.hemicube_resolution == 0)
+    r.form_factors.hemicube_resolution = hemicube_resolution_for(mesh);
+  check(r.form_factors);
+  if (r.exact_direct) check(r.direct);
+  result.form_factors = r.form_factors;
+  const int n = static_cast<int>(mesh.elements.size());
+  const bool shooting = r.solver == RecipeSolver::Progressive;
+  if (!shooting && n > 20000)
+    throw std::invalid_argument("solve_recipe: " + std::to_string(n) + " elements is too many for a stored matrix");
+  const FormFactorScene receivers(element_shapes(mesh));
+  Timer timer;
+  RadiositySystem system = make_system(mesh, shooting ? FormFactorMatrix{} : form_factor_matrix(receivers, r.form_factors, r.threads));
+  result.form_factor_seconds = timer.seconds();
+
+  timer.restart();
+  const std::vector<Color> E = system.emission;
+  if (r.exact_direct) {
+    result.direct = direct_radiosity(receivers, mesh, r.direct);
+    system = indirect_system(std::move(system), result.direct);  // moved, not copied: F may be 100s of MB
+  }
+  result.direct_seconds = r.exact_direct ? timer.seconds() : 0;
+
+  // Shooting computes a patch's row the first time it shoots and keeps it: those
+  // seconds are the form factors', the rest the solver's.
+  std::vector<std::vector<double>> rows(mesh.patches.size());
+  double row_seconds = 0;
+  const ShooterRow row = [&](int p) {
+    if (rows[p].empty()) {
+      const Timer row_timer;
+      rows[p] = form_factor_row(receivers, mesh.patches[p].shape, p, r.form_factors);
+      row_seconds += row_timer.seconds();
+    }
+    return rows[p];
+  };
+  const SolverResult solution = run_solver(system, mesh, row, r);
+  // The solver's own clock leaves out the monitor's bookkeeping (residuals for the
+  // history), which is not part of the method.
+  result.solve_seconds = solution.history.back().seconds - row_seconds;
+  result.form_factor_seconds += row_seconds;
+  result.status = solution.status;
+  result.B = solution.B;
+  if (r.exact_direct)
+    for (int i = 0; i < n; ++i) result.B[i] += E[i];  // B = E + B_indirect
+  return result;
+}
+
+}  // namespace gi

@@ -1,0 +1,58 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gi/radiosity/direct_light.hpp"
+#include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/mesh.hpp"
+#include "gi/radiosity/solver.hpp"
+
+namespace gi {
+
+// One way to solve a radiosity scene from start to finish -- a mesh, form factors,
+// where the direct light comes from, a solver -- so that lessons 12 and 15 can set
+// every method side by side on one scene, timed the same way.
+enum class RecipeSolver { Direct, Jacobi, GaussSeidel, Southwell, Progressive };
+std::string name(RecipeSolver solver);  // "direct", "Jacobi", "Gauss-Seidel", "Southwell", "progressive"
+
+struct Recipe {
+  int elements = 1000;       // about how many elements (patch_size_for)
+  int elements_per_side = 1;  // each patch cut into n x n elements: progressive refinement shoots from
+                              // patches; the matrix solvers use elements only
+  FormFactorSettings form_factors;  // the interreflection's (and, without exact_direct, all light's);
+                                    // hemicube_resolution 0: chosen from the mesh (hemicube_resolution_for)
+  bool exact_direct = true;         // the first bounce by direct_radiosity, the rest by form_factors
+  DirectLightSettings direct;
+  RecipeSolver solver = RecipeSolver::GaussSeidel;
+  double tolerance = 1e-5;  // the solver's (options.tolerance)
+  int threads = 0;
+};
+
+// "exact direct + hemicube indirect, Gauss-Seidel": what a table row calls the recipe
+// (the hemicube's resolution and the ray count go in a column of their own).
+std::string describe(const Recipe& recipe);
+
+struct RecipeResult {
+  Mesh mesh;
+  std::vector<Color> B;
+  std::vector<Color> direct;      // D, exact_direct only: B - E - D is what bounced more than once
+  SolveStatus status = SolveStatus::StoppedAtLimit;
+  FormFactorSettings form_factors;  // as used: the hemicube's resolution filled in
+  double form_factor_seconds = 0;  // the matrix (for progressive: the rows, as they are shot)
+  double direct_seconds = 0;       // direct_radiosity (0 without exact_direct)
+  double solve_seconds = 0;        // the solver, form factors excluded
+  double seconds() const { return form_factor_seconds + direct_seconds + solve_seconds; }
+};
+
+// Throws std::invalid_argument for bad settings (as make_mesh, check(FormFactorSettings)
+// and check(DirectLightSettings) do) and for a matrix solver on more than 20 000
+// elements (its n x n matrix would pass 3 GB).
+RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe);
+
+// The hemicube resolution for a mesh: cells small enough that an element a scene's
+// size away still covers about two across, 2 * 2 L / s with s the mean element's side
+// and L the scene's bounding-box diagonal over sqrt(3), rounded up to even, at least
+// 100 and at most 1000.
+int hemicube_resolution_for(const Mesh& mesh);
+
+}  // namespace gi
