@@ -8,9 +8,11 @@
 
 #include "gi/radiosity/form_factor_formulas.hpp"
 #include "gi/radiosity/form_factor_hemicube.hpp"
+#include "gi/radiosity/hierarchical/hierarchical_run.hpp"
 #include "gi/radiosity/hierarchical/leaf_mesh.hpp"
 #include "gi/radiosity/hierarchical/push_pull.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/solvers.hpp"
 #include "gi/radiosity/vertex_colours.hpp"
 
@@ -30,7 +32,6 @@ gi::HierarchicalSettings settings(double f_eps, double bf_eps, double min_area) 
   s.refinement.form_factor_threshold = f_eps;
   s.refinement.threshold = bf_eps;
   s.refinement.min_area = min_area;
-  s.refinement.order = 1;  // F from the receiver's centre, as HSA: the figures quoted below were measured so
   return s;
 }
 
@@ -78,17 +79,19 @@ TEST(PushPull, KeepsThePowerAndEveryNodeHoldsTheMeanOfItsChildren) {
 TEST(Hierarchical, InAClosedBoxTheSourcesOfEveryLeafTileTheBox) {
   // The sources of a leaf's links and of its ancestors' split the rest of the box
   // between them, each part once: seen from the leaf's centre their exact form factors
-  // add up to 1 (to round-off). Each link's F was taken from its own receiver's centre,
-  // though, not the leaf's: their sum, the light the leaf gathers per unit B, is 1 on
-  // average over the area (0.4% high, measured) but up to 26% off at the leaves in a
-  // corner, where an ancestor's centre sees the near walls quite differently (measured
-  // at F_eps = 0.05 and min area 1e-4; HSA's oracle bounds F, not its variation over the
-  // receiver). Asserted: the tiling within 1e-9, the mean within 1%, every leaf within 35%.
+  // add up to 1 (to round-off). Each link's F is its own receiver's mean, though, not
+  // the leaf's centre's: their sum, the light the leaf gathers per unit B, is 1 on
+  // average over the area (0.001% off, measured) but 17% off at the worst leaf, in a
+  // corner, where the centre of a leaf at the minimum area sees its two neighbouring
+  // walls quite differently from the leaf's mean, and the errors of its ancestors'
+  // many links, each within the oracle's threshold, add up (measured at F_eps 0.05,
+  // BF_eps 1e-3, min area 1e-3). Asserted: the tiling within 1e-9, the mean within
+  // 0.1%, every leaf within 25%.
   gi::Hierarchy h = gi::make_hierarchy(gi::closed_box().surfaces);
-  const gi::HierarchicalResult r = solve(h, settings(0.05, 1e-3, 1e-4));
+  const gi::HierarchicalResult r = solve(h, settings(0.05, 1e-3, 1e-3));
   ASSERT_EQ(r.solution.status, gi::SolveStatus::Converged);
   const std::vector<int> leaf = gi::leaves(h);
-  ASSERT_GT(leaf.size(), 1000u);
+  ASSERT_GT(leaf.size(), 300u);
   double worst_tiling = 0, worst = 0, mean = 0, area = 0;
   for (int n : leaf) {
     const gi::Node& node = h.nodes[n];
@@ -102,19 +105,20 @@ TEST(Hierarchical, InAClosedBoxTheSourcesOfEveryLeafTileTheBox) {
     mean += node.shape.area * c, area += node.shape.area;
   }
   EXPECT_LT(worst_tiling, 1e-9) << "some leaf's sources leave part of the box out, or count it twice";
-  EXPECT_NEAR(mean / area, 1.0, 0.01) << "the links' F, area-weighted over the leaves";
-  EXPECT_LT(worst, 0.35) << "some leaf's links cover " << 1 - worst << " or " << 1 + worst << " of its view";
+  EXPECT_NEAR(mean / area, 1.0, 0.001) << "the links' F, area-weighted over the leaves";
+  EXPECT_LT(worst, 0.25) << "some leaf's links cover " << 1 - worst << " or " << 1 + worst << " of its view";
 }
 
 TEST(Hierarchical, WhiteFurnaceGivesEOverOneMinusRhoAtEveryLeaf) {
   // Every face emits E and reflects rho: B = E + rho B everywhere, B = E / (1 - rho).
   // A leaf gathers with its links' F, which cover its view within the error of the
-  // test above: B is right on average (area-weighted mean within 1%; 0.2% measured) and
-  // at every leaf within 8% (4.7% measured, at a corner).
+  // test above: B is right on average (area-weighted mean within 1%) and at every leaf
+  // within 4% (1.9% measured, at a corner; at min area 1e-4 the corner leaves are
+  // smaller and worse, 13%: the errors of many links add up, docs/13).
   std::vector<gi::Surface> faces = gi::closed_box().surfaces;
   for (gi::Surface& f : faces) f.reflectance = Color(0.5), f.emission = Color(1.0);
   gi::Hierarchy h = gi::make_hierarchy(faces);
-  const gi::HierarchicalResult r = solve(h, settings(0.05, 1e-2, 1e-3));
+  const gi::HierarchicalResult r = solve(h, settings(0.05, 1e-3, 1e-3));
   ASSERT_EQ(r.solution.status, gi::SolveStatus::Converged);
   const std::vector<int> leaf = gi::leaves(h);
   ASSERT_GT(leaf.size(), 100u);
@@ -122,7 +126,7 @@ TEST(Hierarchical, WhiteFurnaceGivesEOverOneMinusRhoAtEveryLeaf) {
   double area = 0;
   for (std::size_t k = 0; k < leaf.size(); ++k) {
     const Color& b = r.solution.B[k];
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(b[c], 2.0, 0.08 * 2.0) << "leaf " << k << ", channel " << c;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(b[c], 2.0, 0.04 * 2.0) << "leaf " << k << ", channel " << c;
     mean += h.nodes[leaf[k]].shape.area * b, area += h.nodes[leaf[k]].shape.area;
   }
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c] / area, 2.0, 0.01 * 2.0) << "channel " << c;
@@ -131,7 +135,7 @@ TEST(Hierarchical, WhiteFurnaceGivesEOverOneMinusRhoAtEveryLeaf) {
 TEST(Hierarchical, EnergyBalanceInAClosedBox) {
   // Closed: all light emitted is absorbed somewhere. A surface absorbs (1 - rho) of
   // what reaches it, H = (B - E) / rho, so sum A (1 - rho) (B - E) / rho = sum A E,
-  // per channel, within the links' F error (0.5% measured at 5664 leaves; asserted 2%).
+  // per channel, within the links' F error (0.35% measured at 4494 leaves; asserted 2%).
   gi::RadiosityScene scene = gi::closed_box();
   scene.surfaces[0].reflectance = Color(0.8, 0.3, 0.6);
   scene.surfaces[2].reflectance = Color(0.2, 0.7, 0.4);
@@ -171,7 +175,7 @@ TEST(Hierarchical, ApproachesTheUniformFineMeshSolutionAsTheThresholdFalls) {
   // Two squares with a blocker between: a shadow on the top square. Against the
   // uniform solution on about 2000 elements (a convergence study: the same equation on
   // another mesh, with another form-factor method), the RMS difference (area-weighted,
-  // relative) falls as BF_eps does: 0.33%, 0.07%, 0.06% measured; the last asserted
+  // relative) falls as BF_eps does: 0.55%, 0.32%, 0.18% measured; the last asserted
   // below 0.3%. What is left lies along the shadow's soft edges, where neither
   // piecewise-constant solution is exact.
   const gi::RadiosityScene scene = gi::occluded_squares();
@@ -276,3 +280,89 @@ TEST(LeafContaining, WalksToTheLeafOfAPoint) {
 }
 
 }  // namespace
+
+TEST(FormFactorRange, TheMeanIsTheAnalyticFormFactorAndTheSpreadShowsTheNearField) {
+  // Two unit squares: facing at distance 5, F hardly changes across the receiver;
+  // meeting at a right angle, it runs from near 0 at the far edge to near 1/2 at the
+  // shared one.
+  const gi::Polygon floor = gi::make_polygon(std::array<gi::vec3, 4>{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}});
+  const gi::Polygon far = gi::make_polygon(std::array<gi::vec3, 4>{{{0, 0, 5}, {0, 1, 5}, {1, 1, 5}, {1, 0, 5}}});
+  const gi::Polygon wall = gi::make_polygon(std::array<gi::vec3, 4>{{{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}}});
+  for (const gi::Polygon* to : {&far, &wall}) {
+    const gi::FormFactorRange r = gi::form_factor_analytic_range(floor, *to, 3);
+    EXPECT_DOUBLE_EQ(r.mean, gi::form_factor_analytic(floor, *to, 3));
+    EXPECT_LE(r.least, r.mean);
+    EXPECT_GE(r.greatest, r.mean);
+  }
+  const gi::FormFactorRange facing = gi::form_factor_analytic_range(floor, far, 3);
+  const gi::FormFactorRange beside = gi::form_factor_analytic_range(floor, wall, 3);
+  EXPECT_LT(facing.greatest - facing.least, 0.1 * facing.mean) << "far apart: nearly constant";
+  EXPECT_GT(beside.greatest - beside.least, beside.mean) << "beside: F changes more than its mean across the floor";
+}
+
+TEST(Hierarchical, ExactDirectLightAgreesWithTheUniformRecipe) {
+  // The Cornell box with exact direct light, hierarchical against lesson 12's uniform
+  // recipe (about 2000 elements, hemicube sized to the mesh, Gauss-Seidel): the same
+  // direct light D by the same ray-cast method on other pieces, and the indirect light
+  // by another discretisation and another form-factor method. Per surface, the
+  // area-weighted means of D agree within 0.5% of the brightest D (0.013% measured),
+  // and of B within 5% of each surface's own B (3.5% measured, 4327 leaves against
+  // 2000 elements: a comparison of two discretisations, not with the truth).
+  const gi::RadiosityScene scene = gi::cornell_box();
+  gi::Recipe recipe;
+  recipe.elements = 2000;
+  recipe.form_factors.hemicube_resolution = 0;
+  const gi::RecipeResult uniform = gi::solve_recipe(scene.surfaces, recipe);
+  gi::HierarchicalSettings s;
+  s.exact_direct = true;
+  const gi::HierarchicalRun run = gi::run_hierarchical(scene, s, 2);
+  ASSERT_EQ(run.result.solution.status, gi::SolveStatus::Converged);
+  const std::vector<int> leaf = gi::leaves(run.hierarchy);
+  ASSERT_EQ(run.result.direct.size(), leaf.size());
+  const std::size_t n = scene.surfaces.size();
+  std::vector<Color> uB(n, Color(0.0)), uD(n, Color(0.0)), hB(n, Color(0.0)), hD(n, Color(0.0));
+  std::vector<double> uA(n, 0), hA(n, 0);
+  for (std::size_t i = 0; i < uniform.mesh.elements.size(); ++i) {
+    const gi::Element& e = uniform.mesh.elements[i];
+    uB[e.surface] += e.shape.area * uniform.B[i], uD[e.surface] += e.shape.area * uniform.direct[i];
+    uA[e.surface] += e.shape.area;
+  }
+  for (std::size_t k = 0; k < leaf.size(); ++k) {
+    const gi::Node& node = run.hierarchy.nodes[leaf[k]];
+    hB[node.surface] += node.shape.area * run.result.solution.B[k];
+    hD[node.surface] += node.shape.area * run.result.direct[k];
+    hA[node.surface] += node.shape.area;
+  }
+  double brightest = 0, worst_D = 0, worst_B = 0;
+  for (std::size_t f = 0; f < n; ++f) brightest = std::max(brightest, gi::max_component(uD[f] / uA[f]));
+  for (std::size_t f = 0; f < n; ++f)
+    for (int c = 0; c < 3; ++c) {
+      const double d = std::abs(hD[f][c] / hA[f] - uD[f][c] / uA[f]) / brightest;
+      const double b = std::abs(hB[f][c] / hA[f] - uB[f][c] / uA[f]) / (uB[f][c] / uA[f]);
+      worst_D = std::max(worst_D, d), worst_B = std::max(worst_B, b);
+      EXPECT_LT(d, 0.005) << "surface " << f << ", channel " << c << ": D differs";
+      EXPECT_LT(b, 0.05) << "surface " << f << ", channel " << c << ": B differs";
+    }
+  EXPECT_GT(worst_B, 0) << "two different discretisations agree to the last bit: one of them is not computed";
+}
+
+TEST(Hierarchical, SeatedInTheRecipeGivesTheRunsSolution) {
+  // solve_recipe with RecipeSolver::Hierarchical: the leaves as its mesh, the run's B
+  // and D per leaf, the same bytes as the run itself with the same settings.
+  const gi::RadiosityScene scene = gi::cornell_box();
+  gi::Recipe recipe;
+  recipe.solver = gi::RecipeSolver::Hierarchical;
+  recipe.hierarchical.refinement.threshold = 1e-2;
+  recipe.hierarchical.refinement.min_area = 1e-3;
+  recipe.threads = 2;
+  const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, recipe);
+  gi::HierarchicalSettings s = recipe.hierarchical;
+  s.exact_direct = true;
+  s.tolerance = recipe.tolerance;
+  const gi::HierarchicalRun run = gi::run_hierarchical(scene, s, 2);
+  ASSERT_EQ(r.mesh.elements.size(), gi::leaves(run.hierarchy).size());
+  EXPECT_EQ(r.B, run.result.solution.B);
+  EXPECT_EQ(r.direct, run.result.direct);
+  EXPECT_EQ(r.status, gi::SolveStatus::Converged);
+  EXPECT_EQ(gi::describe(recipe), "exact direct + links indirect, hierarchical");
+}

@@ -21,7 +21,7 @@ HierarchicalRun run_hierarchical(const RadiosityScene& scene, const Hierarchical
   check(settings);
   Hierarchy hierarchy = make_hierarchy(scene.surfaces);
   FormFactorScene blockers(surface_shapes(hierarchy));
-  HierarchicalRun run{std::move(hierarchy), std::move(blockers), {}};
+  HierarchicalRun run{std::move(hierarchy), std::move(blockers), settings, {}};
   const Timer timer;
   run.result = solve_hierarchical(run.hierarchy, run.blockers, settings, threads);
   run.seconds = timer.seconds();
@@ -31,6 +31,7 @@ HierarchicalRun run_hierarchical(const RadiosityScene& scene, const Hierarchical
 
 SolverResult relight(HierarchicalRun& run, const std::vector<Color>& emission, double tolerance, int threads) {
   Hierarchy& h = run.hierarchy;
+  if (run.settings.exact_direct) throw std::invalid_argument("relight: a run with exact direct light must be solved again");
   if (emission.size() != h.surfaces.size()) throw std::invalid_argument("relight: one emission per surface");
   for (const Color& e : emission)
     if (!is_finite(e) || e.x < 0 || e.y < 0 || e.z < 0)
@@ -47,9 +48,18 @@ SolverResult relight(HierarchicalRun& run, const std::vector<Color>& emission, d
   return solve_links(h, options, threads);
 }
 
+std::vector<Color> shown_radiosity(const HierarchicalRun& run) {
+  const Hierarchy& h = run.hierarchy;
+  std::vector<Color> B = leaf_radiosity(h);
+  if (!run.settings.exact_direct) return B;
+  const std::vector<int> leaf = leaves(h);
+  for (std::size_t k = 0; k < leaf.size(); ++k) B[k] += h.surfaces[h.nodes[leaf[k]].surface].emission;
+  return B;
+}
+
 LeafPicture render_leaves(const HierarchicalRun& run, const Camera& camera, const DisplaySettings& settings) {
   const LeafMesh leaves = leaf_mesh(run.hierarchy);
-  const std::vector<Color> B = leaf_radiosity(run.hierarchy);
+  const std::vector<Color> B = shown_radiosity(run);
   const FormFactorScene shapes(element_shapes(leaves.mesh));
   LeafPicture out{render_radiosity_picture(shapes, leaves.mesh, B, leaf_vertex_radiosity(leaves, B), camera, settings),
                   {}};

@@ -15,6 +15,7 @@ namespace gi {
 struct HierarchicalRun {
   Hierarchy hierarchy;
   FormFactorScene blockers;  // the input surfaces: the shadow rays' world
+  HierarchicalSettings settings;
   HierarchicalResult result;
   double seconds = 0;  // refinements and solves, all rounds
   std::size_t link_bytes = 0;
@@ -25,8 +26,12 @@ HierarchicalRun run_hierarchical(const RadiosityScene& scene, const Hierarchical
 // B = E, no refinement. The system is linear in E, so the links (F and V) need not
 // change; only how finely they were cut was chosen for the old light. Returns the
 // solve's result (B per leaf); the hierarchy keeps the new B. Throws
-// std::invalid_argument for a wrong count or a negative or non-finite emission.
+// std::invalid_argument for a wrong count or a negative or non-finite emission, and
+// for a run with exact direct light (whose D would have to be recomputed).
 SolverResult relight(HierarchicalRun& run, const std::vector<Color>& emission, double tolerance, int threads);
+
+// B of every leaf as the eye sees it (E + B' with exact direct light), in the order of leaves().
+std::vector<Color> shown_radiosity(const HierarchicalRun& run);
 
 // The leaves shaded with their vertex colours (leaf_mesh.hpp: no T-vertex cracks),
 // and the same picture with the leaves' outlines drawn over it.

@@ -1,6 +1,7 @@
 #include "gi/radiosity/hierarchical/hierarchical_solver.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "gi/core/parallel.hpp"
@@ -45,6 +46,22 @@ std::vector<Color> radiosity_of(const Hierarchy& h, const std::vector<int>& leaf
   return B;
 }
 
+// exact_direct: every leaf's emission becomes its direct light D (the source term of
+// the indirect system); a leaf keeps its D once computed (`known`, by node).
+void set_direct_light(Hierarchy& h, const DirectLighting& lights, const FormFactorScene& blockers,
+                      const DirectLightSettings& settings, std::vector<char>& known) {
+  const std::vector<int> leaf = leaves(h);
+  known.resize(h.nodes.size(), 0);
+  parallel_for(static_cast<int>(leaf.size()), settings.threads, [&](int k) {
+    Node& node = h.nodes[leaf[k]];
+    if (!known[leaf[k]]) node.E = direct_radiosity(lights, blockers, node.shape, node.rho, settings.receiver_points);
+  });
+  for (int n : leaf) known[n] = 1;
+  // BF-refinement's scale is the largest emission of the system solved: here D's.
+  h.largest_emission = 0;
+  for (int n : leaf) h.largest_emission = std::max(h.largest_emission, max_component(h.nodes[n].E));
+}
+
 }  // namespace
 
 void check(const HierarchicalSettings& s) {
@@ -53,6 +70,7 @@ void check(const HierarchicalSettings& s) {
   if (s.max_iterations < 1 || s.max_iterations > 1'000'000)
     throw std::invalid_argument("hierarchical radiosity: max iterations must lie in [1, 10^6]");
   if (s.max_rounds < 0 || s.max_rounds > 1000) throw std::invalid_argument("hierarchical radiosity: max rounds must lie in [0, 1000]");
+  if (s.exact_direct) check(s.direct);
 }
 
 std::vector<Color> leaf_radiosity(const Hierarchy& h) { return radiosity_of(h, leaves(h)); }
@@ -132,6 +150,12 @@ HierarchicalResult solve_hierarchical(Hierarchy& h, const FormFactorScene& block
   options.max_steps = s.max_iterations;
   const Timer clock;
   bool settled = false;
+  std::vector<char> known;  // exact_direct: the leaves whose D is set
+  std::optional<DirectLighting> lights;
+  if (s.exact_direct) {
+    lights.emplace(make_mesh(h.surfaces, {1e300, 1}), s.direct.light_cells);
+    for (Node& node : h.nodes) node.E = node.B = Color(0.0);  // B' before any light has bounced
+  }
   for (int round = 0; round <= s.max_rounds; ++round) {
     RefinementRound row;
     row.round = round;
@@ -143,6 +167,7 @@ HierarchicalResult solve_hierarchical(Hierarchy& h, const FormFactorScene& block
       settled = true;
       break;
     }
+    if (s.exact_direct) set_direct_light(h, *lights, blockers, s.direct, known);
     const std::vector<int> leaf = leaves(h);
     const std::vector<Color> before = radiosity_of(h, leaf);
     const double start = clock.seconds();
@@ -167,6 +192,13 @@ HierarchicalResult solve_hierarchical(Hierarchy& h, const FormFactorScene& block
     if (solve.status == SolveStatus::Diverged) return result;
   }
   if (all.status == SolveStatus::Converged && !settled) all.status = SolveStatus::StoppedAtLimit;
+  if (s.exact_direct) {
+    const std::vector<int> leaf = leaves(h);
+    for (std::size_t k = 0; k < leaf.size(); ++k) {
+      result.direct.push_back(h.nodes[leaf[k]].E);
+      all.B[k] += h.surfaces[h.nodes[leaf[k]].surface].emission;  // B = E + B'
+    }
+  }
   return result;
 }
 

@@ -2,6 +2,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "gi/radiosity/direct_light.hpp"
 #include "gi/radiosity/hierarchical/refine.hpp"
 #include "gi/radiosity/solver.hpp"
 
@@ -18,6 +19,14 @@ struct HierarchicalSettings {
   double tolerance = 1e-6;  // each solve: until ||B_new - B_old|| / ||E|| (leaves, area-weighted) is below it
   int max_iterations = 500; // per solve
   int max_rounds = 20;      // BF-refinements after the first round
+  // Exact direct light, as lesson 12's recipes have it (direct_light.hpp): every leaf's
+  // D = rho (1/A) integral of H(x) over it, by shadow rays to the light, and the links
+  // carry only the light that has bounced: the nodes hold B' of
+  //   B'_p = D_p + rho_p sum over links F V B'_q        (indirect_system's equation)
+  // and the result adds E back, B = E + B'. The oracle then refines for the smooth
+  // indirect light only; the shadows are the direct light's business.
+  bool exact_direct = false;
+  DirectLightSettings direct;
 };
 void check(const HierarchicalSettings& settings);  // throws std::invalid_argument
 
@@ -40,6 +49,7 @@ struct HierarchicalResult {
   // every round, numbered on, its time counting the refinements too. Converged when the
   // last refinement changed nothing and the solve before it converged.
   SolverResult solution;
+  std::vector<Color> direct;  // exact_direct only: D per leaf; solution.B - E - D is what bounced more than once
   std::vector<RefinementRound> rounds;
 };
 

@@ -13,6 +13,11 @@ struct Link {
   double F = 0;           // F_pq, receiver to source, with nothing in between (analytic, link_estimate.hpp)
   double F_back = 0;      // F_qp, source to receiver: the oracle's second estimate
   double visibility = 0;  // V_pq in [0, 1]: the fraction of shadow rays between them that get through
+  // The least and the greatest point-to-polygon F from the receiver's sample points to
+  // the source, nothing in between: how much F changes across the receiver, which a
+  // link (one F for the whole receiver) cannot carry. The oracle's error estimate.
+  // Floats: an estimate, and a link stays at 40 bytes.
+  float F_min = 0, F_max = 0;
 };
 
 }  // namespace gi

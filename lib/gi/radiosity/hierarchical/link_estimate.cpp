@@ -1,5 +1,7 @@
 #include "gi/radiosity/hierarchical/link_estimate.hpp"
 
+#include <algorithm>
+
 #include "gi/radiosity/form_factor_formulas.hpp"
 #include "gi/radiosity/hierarchical/visibility.hpp"
 
@@ -27,7 +29,17 @@ Link estimate_link(const FormFactorScene& blockers, const Hierarchy& h, int rece
                    int rays_per_side, std::uint64_t seed) {
   const Polygon& p = h.nodes[receiver].shape;
   const Polygon& q = h.nodes[source].shape;
-  Link link{receiver, source, form_factor_analytic(p, q, order), form_factor_analytic(q, p, order), 0.0};
+  FormFactorRange F = form_factor_analytic_range(p, q, order);
+  // Gauss points lie inside; F changes most towards the corners (beside a neighbour's
+  // edge it rises to 1/2). So the spread also looks at the corners, set in by
+  // corner_inset of the receiver's size, where F is finite.
+  for (const double u : {corner_inset, 1 - corner_inset})
+    for (const double v : {corner_inset, 1 - corner_inset}) {
+      const double at = form_factor_point_to_polygon(bilinear(p.corners, u, v), p.normal, q);
+      F.least = std::min(F.least, at), F.greatest = std::max(F.greatest, at);
+    }
+  Link link{receiver, source, F.mean, F.mean * p.area / q.area, 0.0};  // F_qp by reciprocity: A_p F_pq = A_q F_qp
+  link.F_min = static_cast<float>(F.least), link.F_max = static_cast<float>(F.greatest);
   link.visibility = link_visibility(blockers, h, receiver, source, rays_per_side, seed);
   return link;
 }

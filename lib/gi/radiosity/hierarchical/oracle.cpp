@@ -1,7 +1,5 @@
 #include "gi/radiosity/hierarchical/oracle.hpp"
 
-#include <algorithm>
-
 #include "gi/core/not_implemented.hpp"
 
 namespace gi {
@@ -15,14 +13,18 @@ std::string name(Refinement refinement) {
   return "?";
 }
 
-Refinement oracle(const Link& link, double brightness, double threshold, bool receiver_can_split,
+Refinement oracle(const Link& link, Brightness brightness, double threshold, bool receiver_can_split,
                   bool source_can_split) {
   // BEGIN EXERCISE 13.1 the refinement oracle
-  double error = brightness * std::max(link.F, link.F_back);
-  if (link.visibility > 0 && link.visibility < 1) error *= partial_visibility_factor;  // a shadow edge inside
+  const bool shadow_edge_inside = link.visibility > 0 && link.visibility < 1;
+  const double F_min = shadow_edge_inside ? 0.0 : link.F_min;
+  const double error = brightness.greatest * link.F_max - brightness.least * F_min;
   if (error <= threshold) return Refinement::Accept;
-  if (link.F >= link.F_back) return source_can_split ? Refinement::SplitSource : Refinement::Accept;
-  return receiver_can_split ? Refinement::SplitReceiver : Refinement::Accept;
+  const bool source_bigger = link.F >= link.F_back;
+  if (source_bigger && source_can_split) return Refinement::SplitSource;
+  if (receiver_can_split) return Refinement::SplitReceiver;
+  if (source_can_split) return Refinement::SplitSource;
+  return Refinement::Accept;
   // END EXERCISE 13.1
 }
 

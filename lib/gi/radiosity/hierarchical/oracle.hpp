@@ -10,25 +10,37 @@ namespace gi {
 enum class Refinement { Accept, SplitReceiver, SplitSource };
 std::string name(Refinement refinement);  // "accept", "split receiver", "split source"
 
-// Hanrahan, Salzman and Aupperle's oracle for the link that brings q's light to p.
-// Its error estimate is the larger of the two form factors, times a brightness:
-//   error = brightness * max(F_pq, F_qp)
-// F-refinement (before any B is known): brightness 1, so every form factor is
-// computed to the threshold. BF-refinement: brightness = rho_p B_q / E_max (the
-// largest channel), so a link is refined as much as the light it carries matters.
-// Visibility does not lower the error: a link its shadow rays found wholly hidden is
-// cut as finely as a visible one would be (a refinement that stopped wherever its
-// rays happened to miss the light would lose, on average, the light they missed). A
-// link they found partly hidden has a shadow's edge inside it, where the light jumps
-// from all to nothing across the receiver: its error counts partial_visibility_factor
-// times, so shadows are drawn finer than the light around them.
+// The light a link carries per unit of F, as a range over its source: rho_p B_q at the
+// source's darkest and brightest part (its children; the source itself at a leaf),
+// over the scene's largest emission. F-refinement, before any B is known: 1 and 1.
+struct Brightness {
+  double least = 1, greatest = 1;
+};
+
+// The oracle for the link that brings q's light to p. A link hands the receiver one
+// number, rho_p F_pq V B_q, for all of it; at a point x of the receiver the light is
+// rho_p F(x -> q) V(x) B(y) over the source's points y. So the error at the worst point
+// is bounded by the spread of the transfer (Lischinski, Tampieri and Greenberg 1994;
+// Holzschuch and Sillion 1998 bound the same spread):
+//   error = greatest * F_max - least * F_min
+// with F_min and F_max the least and greatest point-to-polygon F over the receiver's
+// sample points (Link). A link its shadow rays found partly hidden has a shadow's edge
+// inside it, where the light falls to nothing: there F_min counts as 0. A link they
+// found wholly hidden is judged as a visible one (a refinement that stopped wherever
+// its few rays happened to miss the light would lose, on average, the light they missed).
+//
+// Hanrahan, Salzman and Aupperle's oracle (1991) bounded F itself, brightness *
+// max(F_pq, F_qp): a link that carries much light but the same to every point of its
+// receiver (F constant) is cut anyway, and one whose F changes several-fold across a
+// receiver beside its source is not, if F is small (measured in docs/13: corner
+// leaves up to 26% wrong).
 //
 // When the error exceeds the threshold, the oracle splits the end that looks bigger
-// from the other: F_pq >= F_qp means the source fills more of the receiver's view than
-// the receiver of the source's (A_q >= A_p, by reciprocity), so the source is split.
-// An end below the minimum area cannot be split; then the link is accepted as it is.
-inline constexpr double partial_visibility_factor = 4;
-Refinement oracle(const Link& link, double brightness, double threshold, bool receiver_can_split,
+// from the other, as Hanrahan et al. do: F_pq >= F_qp means the source fills more of
+// the receiver's view than the receiver of the source's (A_q >= A_p, by reciprocity),
+// so the source is split. An end at the minimum area cannot be split; then the other
+// end is, and when neither can, the link is accepted as it is.
+Refinement oracle(const Link& link, Brightness brightness, double threshold, bool receiver_can_split,
                   bool source_can_split);
 
 }  // namespace gi

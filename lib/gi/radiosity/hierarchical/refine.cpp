@@ -22,10 +22,21 @@ struct Verdict {
 
 // The oracle's brightness: 1 for F-refinement; for BF-refinement the light the link
 // would carry per unit F, rho_p B_q, over the scene's largest emission, so that the
-// threshold is a fraction of the light source's radiosity whatever the units.
-double brightness(const Hierarchy& h, const Node& p, const Node& q, Criterion criterion) {
-  if (criterion == Criterion::FormFactor) return 1;
-  return h.largest_emission > 0 ? max_component(p.rho * q.B) / h.largest_emission : 0.0;
+// threshold is a fraction of the light source's radiosity whatever the units. Its
+// range over the source is read from the source's children, where it has any: the
+// mean B_q a link carries is right for every point of the receiver only if B is
+// constant over the source.
+Brightness brightness(const Hierarchy& h, const Node& p, const Node& q, Criterion criterion) {
+  if (criterion == Criterion::FormFactor) return {1, 1};
+  if (h.largest_emission <= 0) return {0, 0};
+  const auto relative = [&](const Node& part) { return max_component(p.rho * part.B) / h.largest_emission; };
+  if (q.leaf()) return {relative(q), relative(q)};
+  Brightness b{1e300, 0};
+  for (int child : q.children) {
+    const double r = relative(h.nodes[child]);
+    b.least = std::min(b.least, r), b.greatest = std::max(b.greatest, r);
+  }
+  return b;
 }
 
 double threshold(const RefinementSettings& s, Criterion criterion) {
@@ -104,7 +115,7 @@ void check(const RefinementSettings& s) {
   if (!(s.form_factor_threshold > 0 && s.form_factor_threshold <= 10)) fail("the F threshold must lie in (0, 10]");
   if (!(s.threshold > 0 && s.threshold <= 10)) fail("the BF threshold must lie in (0, 10]");
   if (!(s.min_area >= 1e-12 && s.min_area <= 1)) fail("the minimum area must lie in [1e-12, 1] (of the scene's)");
-  if (s.order < 1 || s.order > 4) fail("the quadrature order must lie in [1, 4]");
+  if (s.order < 2 || s.order > 4) fail("the quadrature order must lie in [2, 4] (one point sees no spread)");
   if (s.rays_per_side < 1 || s.rays_per_side > 16) fail("the shadow rays per side must lie in [1, 16]");
 }
 
