@@ -197,15 +197,15 @@ TEST(Lessons, SolverShowdownDetectsDivergence) {
 }
 
 TEST(Lessons, HierarchicalWritesItsTablesAndRefusesBadThresholds) {
-  const LessonRun r = run("13_hierarchical", "--width 32 --height 32 --reference-elements 100 --uniform-elements 150 --min-area 1e-3 --out " +
+  const LessonRun r = run("13_hierarchical", "--uniform-elements 100 --min-area 1e-3 --out " +
                                                  out_dir("13"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_EQ(r.output.find("nan"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("linear in E"), std::string::npos) << r.output;
   for (const char* file : {"thresholds.csv", "rounds.csv", "uniform.csv", "stability.csv", "relight.csv", "leaves.png",
-                           "leaves.ply", "links.svg", "error_time.svg", "reference.pfm"})
+                           "leaves.ply", "links.svg", "error_time.svg", "hierarchical.pfm"})
     EXPECT_TRUE(fs::exists(out_dir("13") + "/" + file)) << file;
-  for (const char* args : {"--threshold 0", "--min-area 1", "--f-threshold nan", "--reference-elements 10"}) {
+  for (const char* args : {"--threshold 0", "--min-area 1", "--f-threshold nan", "--uniform-elements 10"}) {
     const LessonRun bad = run("13_hierarchical", args);
     EXPECT_EQ(bad.status, 2) << args;
     EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << args << ":\n" << bad.output;
