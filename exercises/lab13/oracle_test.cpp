@@ -61,4 +61,7 @@ TEST(Ex13_1_Oracle, APartlyHiddenLinkIsRefinedFurther) {
          "as 0, so the error is 0.32 > 0.05";
   EXPECT_EQ(gi::oracle(link(0.3, 0.1, 0.28f, 0.32f, 0.0), unit, 0.05, true, true), accept)
       << "wholly hidden: no shadow edge inside, judge it as a visible one (0.04 <= 0.05)";
+  EXPECT_NE(gi::oracle(link(0.3, 0.1, 0.0f, 0.5f, 0.0), unit, 0.05, true, true), accept)
+      << "wholly hidden to a few rays is not accurate: F runs from 0 to 0.5 across the receiver, error 0.5 > 0.05, "
+         "refine it as a visible link";
 }
