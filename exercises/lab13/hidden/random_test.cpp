@@ -19,8 +19,9 @@ TEST(Ex13_1_RandomLinks, ConstantTransferIsAcceptedAndALooserThresholdNeverRefin
     const double threshold = 0.1 * rng.uniform();
     const gi::Refinement tight = gi::oracle(link, brightness, threshold, true, true);
     const gi::Refinement loose = gi::oracle(link, brightness, 10 * threshold + 1e-3, true, true);
-    if (tight == gi::Refinement::Accept)
+    if (tight == gi::Refinement::Accept) {
       ASSERT_EQ(loose, gi::Refinement::Accept) << "accepted at threshold " << threshold << " but refined at a looser one";
+    }
     gi::Link flat{0, 1, link.F, link.F_back, 1.0};
     flat.F_min = flat.F_max = static_cast<float>(link.F);
     ASSERT_EQ(gi::oracle(flat, {0.7, 0.7}, 1e-6, true, true), gi::Refinement::Accept)
