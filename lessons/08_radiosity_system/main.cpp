@@ -15,6 +15,7 @@
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/radiosity/solvers.hpp"
 #include "gi/radiosity/vertex_colours.hpp"
+#include "gi/radiosity/viewer_demos.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"
 
@@ -134,6 +135,11 @@ int main(int argc, char** argv) {
                 [&](const std::filesystem::path& file) {
                   gi::write_ply(mesh, gi::vertex_radiosity(mesh, direct.B), exposure, file);
                 });
+    lesson.viewer("the Neumann series term by term; relighting with two more lamps", [&](const std::filesystem::path& file) {
+      gi::write_viewer_data(gi::neumann_and_relighting(lesson.name(), scene, mesh, system, bounces + 1, exposure,
+                                                       {"short block top", "tall block top"}),
+                            file);
+    });
     lesson.say("\nimages: " + lesson.out().string() + "/ (neumann_series.png: emission, direct, bounces..., " +
                "solution; matrix_K.png; " + gi::file_stem(scene.name) + ".ply for MeshLab or Blender)");
   });

@@ -12,6 +12,7 @@
 #include "gi/radiosity/form_factor_hemicube.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/viewer_demos.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"
@@ -128,6 +129,10 @@ int main(int argc, char** argv) {
                     {curve(jacobi, true, error), curve(gauss_seidel, true, error), curve(sor, true, error)}},
                    what + "_vs_time");
     }
+    lesson.viewer("Jacobi, Gauss-Seidel and SOR side by side", [&](const std::filesystem::path& file) {
+      gi::write_viewer_data(gi::gathering_side_by_side(lesson.name(), scene, mesh, system, direct.B, iterations, omega),
+                            file);
+    });
     lesson.say("\ntables and charts: " + lesson.out().string() + "/");
   });
 }

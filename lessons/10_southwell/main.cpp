@@ -12,6 +12,7 @@
 #include "gi/radiosity/form_factor_hemicube.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/viewer_demos.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"
@@ -119,6 +120,9 @@ int main(int argc, char** argv) {
                   {curve(jacobi, 1, true, 1), curve(gauss_seidel, 1, true, 1),
                    curve(southwell, n, true, std::max(1, n / 16))}},
                  "error_vs_time");
+    lesson.viewer("Southwell beside Jacobi and Gauss-Seidel at equal work", [&](const std::filesystem::path& file) {
+      gi::write_viewer_data(gi::southwell_side_by_side(lesson.name(), scene, mesh, system, direct.B, sweeps), file);
+    });
     lesson.say("\ntables and charts: " + lesson.out().string() + "/");
   });
 }

@@ -13,6 +13,7 @@
 #include "gi/radiosity/progressive.hpp"
 #include "gi/radiosity/radiosity_scene_file.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/viewer_demos.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"
@@ -149,6 +150,12 @@ int main(int argc, char** argv) {
     const Box box(scene, gi::patch_size_for(scene.surfaces, patches * elements_per_side * elements_per_side, elements_per_side),
                   elements_per_side);
     watch_the_shots(box, gi::patch_shooter(box.receivers, box.mesh, hemicube), display, exposure, lesson);
+    lesson.viewer("progressive refinement replayed shot by shot", [&](const std::filesystem::path& file) {
+      gi::write_viewer_data(gi::progressive_replay(lesson.name(), box.scene, box.mesh, box.system,
+                                                   gi::patch_shooter(box.receivers, box.mesh, hemicube),
+                                                   table_shots.back(), exposure),
+                            file);
+    });
     time_to_one_percent(scene, speed_elements, hemicube, lesson);
     lesson.say("\nimages: " + lesson.out().string() + "/ (snapshots.png and snapshots_ambient.png: after 1, 2, 24, " +
                "100 shots)");

@@ -22,6 +22,7 @@
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/viewer_demos.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"
@@ -98,6 +99,11 @@ void showdown(const Box& box, gi::Lesson& lesson) {
   lesson.chart({"All solvers: error against work", "sweeps of work (n^2 multiply-adds)", "RMS error / RMS B", false,
                 true, by_work},
                "error_vs_work");
+  lesson.viewer("every solver's error curve, values under the pointer", [&](const std::filesystem::path& file) {
+    gi::write_viewer_data(gi::finished_runs(lesson.name(), "All solvers on the Cornell box", gi::cornell_box(),
+                                            box.mesh, results),
+                          file);
+  });
 }
 
 // 2. Where solvers crawl or fail, and the spectral radius of RF that says how fast
@@ -237,6 +243,7 @@ void against_truth(bool quick, int threads, std::uint64_t seed, gi::Lesson& less
   std::vector<gi::Series> curves;
   gi::Image best;
   double best_error = 1e300;
+  std::vector<std::string> warnings;
   for (Method m : methods(quick)) {
     m.recipe.elements = m.elements;
     m.recipe.threads = m.recipe.direct.threads = threads;
@@ -261,6 +268,8 @@ void against_truth(bool quick, int threads, std::uint64_t seed, gi::Lesson& less
                              : ff == gi::FormFactorMethod::MonteCarlo ? gi::Cell(r.form_factors.rays)
                                                                       : gi::Cell("-");
     const std::string name = (m.direct_per_pixel ? "direct per pixel, " : "") + gi::describe(m.recipe);
+    if (const std::string w = gi::hemicube_warning(r); !w.empty())
+      warnings.push_back(name + ", " + std::to_string(r.mesh.elements.size()) + " elements: " + w);
     table.add_row({name, static_cast<int>(r.mesh.elements.size()), setting, r.form_factor_seconds,
                    direct_seconds, r.solve_seconds, seconds,
                    100 * error.relative_rms, 100 * error.block_relative});
@@ -270,6 +279,7 @@ void against_truth(bool quick, int threads, std::uint64_t seed, gi::Lesson& less
   }
   lesson.table(table, "against_truth");
   lesson.say("ff: the hemicube's resolution (chosen from the mesh where it is not 100) or Monte Carlo's rays per row");
+  for (const std::string& w : warnings) lesson.say(w);
   lesson.chart({"The Cornell box against the path-traced truth", "mesh to B (s)", "relative RMS error (%)", true, true,
                 curves},
                "truth_error_vs_time");

@@ -23,7 +23,9 @@ const char* const lessons[] = {"01_rays",         "02_recursive",        "03_ant
                                "04_soft_shadows", "05_acceleration",     "06_form_factors",
                                "07_hemicube",     "08_radiosity_system", "09_jacobi_gauss_seidel",
                                "10_southwell",    "11_progressive",      "12_solver_showdown",
-                               "13_hierarchical", "14_path_tracing"};
+                               "13_hierarchical",
+                               "14_path_tracing", "15_radiosity_vs_path_tracing",
+                               "16_two_pass"};
 const char* const rendering[] = {"01_rays", "02_recursive", "03_antialiasing", "04_soft_shadows", "14_path_tracing"};
 // Lessons offer --seed only if they draw random numbers, --threads only if they use threads.
 const char* const without_seed[] = {"01_rays", "02_recursive", "09_jacobi_gauss_seidel", "10_southwell"};
@@ -210,6 +212,29 @@ TEST(Lessons, HierarchicalWritesItsTablesAndRefusesBadThresholds) {
     EXPECT_EQ(bad.status, 2) << args;
     EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << args << ":\n" << bad.output;
   }
+}
+
+// The bench's one line carries an error against the path-traced truth that falls as the
+// direct light moves from the mesh to the pixels (about 20% and 6% at 150 elements: a
+// shadow edge crosses the coarse elements), and refuses a bad recipe in one line.
+TEST(Lessons, CornellBenchScoresARecipeAgainstTheTruth) {
+  const auto error_of = [](const std::string& output) {
+    const std::size_t at = output.find("relative RMS ");
+    return at == std::string::npos ? -1.0 : std::stod(output.substr(at + 13));
+  };
+  const LessonRun mesh = run("12_cornell_bench", "--elements 100 --direct exact --out " + out_dir("12_bench"));
+  ASSERT_EQ(mesh.status, 0) << mesh.output;
+  const LessonRun pixels =
+      run("12_cornell_bench", "--elements 100 --ff monte-carlo --rays 64 --light-cells 1 --out " + out_dir("12_bench"));
+  ASSERT_EQ(pixels.status, 0) << pixels.output;
+  EXPECT_GT(error_of(mesh.output), 12) << mesh.output;
+  EXPECT_LT(error_of(mesh.output), 30) << mesh.output;
+  EXPECT_GT(error_of(pixels.output), 2) << pixels.output;
+  EXPECT_LT(error_of(pixels.output), 10) << pixels.output;
+  EXPECT_TRUE(fs::exists(out_dir("12_bench") + "/cornell.pfm"));
+  const LessonRun bad = run("12_cornell_bench", "--direct sometimes");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
 }
 
 TEST(Lessons, SameBytesForAnyThreadCount) {

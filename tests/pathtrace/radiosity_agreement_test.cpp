@@ -11,10 +11,10 @@
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/direct_display.hpp"
 #include "gi/radiosity/picture_error.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
+#include "gi/radiosity/recipe_picture.hpp"
 
 namespace {
 
@@ -37,12 +37,7 @@ TEST(RadiosityAgainstPathTracing, TheCornellBoxAgreesWithinTheMeshsError) {
   ASSERT_EQ(r.status, gi::SolveStatus::Converged);
   gi::DisplaySettings display;
   display.width = display.height = 128;
-  const gi::FormFactorScene elements(gi::element_shapes(r.mesh));
-  gi::Image picture = gi::render_direct_light(elements, r.mesh, box.camera, display, recipe.direct);
-  const gi::Image rest =
-      gi::render_radiosity_picture(elements, r.mesh, gi::indirect_part(r.mesh, r.B, r.direct), box.camera, display)
-          .radiance;
-  for (std::size_t i = 0; i < picture.pixels.size(); ++i) picture.pixels[i] += rest.pixels[i];
+  const gi::Image picture = gi::recipe_picture(r, box.camera, display, true, recipe.direct);
 
   // The reference's noise is about 0.1% by this measure; the mesh's own error at this
   // size, measured in lesson 12 at 256 x 256, is about 2%. A different camera, palette
@@ -51,6 +46,24 @@ TEST(RadiosityAgainstPathTracing, TheCornellBoxAgreesWithinTheMeshsError) {
   const gi::PictureError error = gi::picture_error(picture, truth.mean, mask);
   EXPECT_LT(noise.relative_rms, 0.003);
   EXPECT_LT(error.relative_rms, 0.025) << "relative RMS against the path-traced box";
+}
+
+TEST(RecipePicture, ThePerPixelDirectLightNeedsTheRecipesDirectPart) {
+  // Without exact_direct there is no D to take out of B: refused, not drawn twice.
+  const gi::RadiosityScene box = gi::cornell_box();
+  gi::Recipe recipe;
+  recipe.elements = 60;
+  recipe.exact_direct = false;
+  const gi::RecipeResult r = gi::solve_recipe(box.surfaces, recipe);
+  gi::DisplaySettings display;
+  display.width = display.height = 16;
+  EXPECT_THROW(gi::recipe_picture(r, box.camera, display, true, recipe.direct), std::invalid_argument);
+  // From the mesh alone it is the display's own picture, byte for byte.
+  const gi::Image shown = gi::recipe_picture(r, box.camera, display, false, recipe.direct);
+  const gi::Image plain =
+      gi::render_radiosity_picture(gi::FormFactorScene(gi::element_shapes(r.mesh)), r.mesh, r.B, box.camera, display)
+          .radiance;
+  EXPECT_EQ(shown.pixels, plain.pixels);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "gi/radiosity/form_factors.hpp"
 #include "gi/radiosity/radiosity_scenes.hpp"
 #include "gi/radiosity/solvers.hpp"
+#include "gi/scene/cornell_box.hpp"
 
 namespace {
 
@@ -225,5 +226,35 @@ TEST(RadiosityFromFile, SurfacesThatOverlapInAPlaneAreRefusedBeforeAnyWork) {
   } catch (const gi::SceneError& e) {
     EXPECT_EQ(std::string(e.what()), file.string() + ": surfaces 'a' and 'b' lie in one plane and overlap; remove "
                                                      "one, or move it off the other");
+  }
+}
+
+// The Cornell box's palette choices (cornell_box.hpp) are scene files too, so that any
+// lesson can switch them with --scene: each file holds the built-in box's surfaces with
+// that choice's reflectances and exitances.
+TEST(RadiosityFromFile, TheCornellBoxVariantsAreTheBuiltInPaletteChoices) {
+  gi::CornellPaletteChoice mcguire, white_light, light_reflects;
+  mcguire.reflectances = gi::CornellReflectances::McGuire;
+  white_light.light = gi::CornellLight::WhiteUnitExitance;
+  light_reflects.light_reflects = true;
+  const std::pair<const char*, gi::CornellPaletteChoice> variants[] = {
+      {"cornell", {}}, {"cornell_mcguire", mcguire}, {"cornell_white_light", white_light},
+      {"cornell_light_reflects", light_reflects}};
+  std::vector<std::string> warnings;
+  for (const auto& [name, choice] : variants) {
+    const std::string file = std::string(GI_SOURCE_DIR) + "/lessons/scenes/" + name + ".json";
+    const gi::RadiosityScene scene = gi::load_radiosity_scene(file, {}, 100, warnings);
+    const gi::CornellBox box = gi::cornell_box_data(gi::CornellContents::Blocks, false, gi::cornell_palette(choice));
+    ASSERT_EQ(scene.surfaces.size(), box.surfaces.size()) << name;
+    for (std::size_t i = 0; i < box.surfaces.size(); ++i) {
+      const gi::Surface& s = scene.surfaces[i];
+      EXPECT_EQ(s.name, box.surfaces[i].name) << name;
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(s.reflectance[k], box.surfaces[i].reflectance[k]) << name << ", " << s.name;
+        // The file holds the radiance L, the box the exitance pi L: one rounding apart.
+        EXPECT_NEAR(s.emission[k], box.surfaces[i].exitance[k], 1e-14 * box.surfaces[i].exitance[k])
+            << name << ", " << s.name;
+      }
+    }
   }
 }

@@ -204,8 +204,29 @@ TEST(Lesson, AFullDiskIsExitOneAndLeavesNoHalfFile) {
   EXPECT_NE(r.err.find("No space left on device"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   for (const std::string& name : gi_test::files_in(disk.path()))
-    EXPECT_TRUE(name == "big.png" || name == "outputs.json") << "left behind: " << name;
-  if (fs::exists(disk.path() / "outputs.json")) {
-    EXPECT_NE(gi_test::file_text(disk.path() / "outputs.json").find("failed"), std::string::npos);
-  }
+    EXPECT_TRUE(name == "big.png" || name == "outputs.json" || name == "index.html") << "left behind: " << name;
+  // The record and its page, when they fit, say the run failed.
+  for (const char* name : {"outputs.json", "index.html"})
+    if (fs::exists(disk.path() / name)) {
+      EXPECT_NE(gi_test::file_text(disk.path() / name).find("failed"), std::string::npos) << name;
+    }
+}
+
+TEST(Lesson, WritesItsReportPageAndTheIndexOfLessonsAboveAFolderNamedAfterIt) {
+  const fs::path root = scratch("pages");
+  const LessonRun r = run({"--out", (root / "01_x").string()}, [](gi::Lesson& lesson) {
+    lesson.say("a line of text");
+    lesson.picture(gi::Image(32, 16, gi::Pixel(0.5f)), "grey", "a grey picture", view(32, 16));
+  });
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string page = gi_test::file_text(root / "01_x" / "index.html");
+  EXPECT_LT(page.find("<pre>a line of text"), page.find("<img src=\"grey.png\"")) << page;
+  EXPECT_NE(page.find("<p class=\"status complete\">complete</p>"), std::string::npos) << page;
+  EXPECT_NE(gi_test::file_text(root / "index.html").find("<a href=\"01_x/index.html\">01_x</a>"), std::string::npos);
+
+  // A folder under another name may sit anywhere: its page, and no index beside it.
+  const fs::path other = scratch("pages_elsewhere");
+  ASSERT_EQ(run({"--out", (other / "mine").string()}, [](gi::Lesson& lesson) { lesson.say("x"); }).status, 0);
+  EXPECT_TRUE(fs::exists(other / "mine" / "index.html"));
+  EXPECT_FALSE(fs::exists(other / "index.html"));
 }

@@ -46,4 +46,13 @@ Image render_direct_light(const FormFactorScene& scene, const Mesh& mesh, const 
   return picture;
 }
 
+Image render_split_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
+                           const std::vector<Color>& D, const Camera& camera, const DisplaySettings& settings,
+                           const DirectLightSettings& direct) {
+  Image picture = render_direct_light(scene, mesh, camera, settings, direct);
+  const Image rest = render_radiosity_picture(scene, mesh, indirect_part(mesh, B, D), camera, settings).radiance;
+  for (std::size_t i = 0; i < picture.pixels.size(); ++i) picture.pixels[i] += rest.pixels[i];
+  return picture;
+}
+
 }  // namespace gi

@@ -25,4 +25,11 @@ std::vector<Color> indirect_part(const Mesh& mesh, const std::vector<Color>& B, 
 Image render_direct_light(const FormFactorScene& scene, const Mesh& mesh, const Camera& camera,
                           const DisplaySettings& settings, const DirectLightSettings& direct);
 
+// The whole split picture: render_direct_light plus the mesh's B - E - D drawn by
+// render_radiosity_picture. `D` is the mesh's direct radiosity (direct_radiosity), the
+// part the per-pixel term replaces.
+Image render_split_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
+                           const std::vector<Color>& D, const Camera& camera, const DisplaySettings& settings,
+                           const DirectLightSettings& direct);
+
 }  // namespace gi

@@ -33,7 +33,10 @@ HemicubeRow row_of(const std::vector<Polygon>& polygons, const Polygon& from, co
     if (buffer.footprint[j] > 0 && buffer.footprint[j] < 1) {
       ++row.sub_cell_receivers;
       row.sub_cell_missed += row.F[j] == 0;
+      row.sub_cell_share += buffer.footprint[j];
     }
+  const double r = weights.resolution;
+  row.sub_cell_share /= 3 * r * r;  // a top face of r x r cells and four half faces
   return row;
 }
 
@@ -65,16 +68,12 @@ FormFactorMatrix form_factor_matrix_hemicube(const std::vector<Polygon>& polygon
     for (int i = b * block; i < std::min(n, (b + 1) * block); ++i) {
       HemicubeRow row = row_of(polygons, polygons[i], weights, buffer);
       std::copy(row.F.begin(), row.F.end(), F.values.begin() + static_cast<std::ptrdiff_t>(i) * n);
-      counts[i] = {{}, row.sub_cell_receivers, row.sub_cell_missed};
+      counts[i] = {{}, row.sub_cell_receivers, row.sub_cell_missed, row.sub_cell_share};
     }
   });
   if (stats) {
     *stats = {};
-    for (const HemicubeRow& row : counts) {
-      stats->sub_cell_receivers += row.sub_cell_receivers;
-      stats->sub_cell_missed += row.sub_cell_missed;
-      stats->rows_with_sub_cell_receivers += row.sub_cell_receivers > 0;
-    }
+    for (const HemicubeRow& row : counts) stats->add_row(row.sub_cell_receivers, row.sub_cell_missed, row.sub_cell_share);
   }
   return F;
 }

@@ -16,6 +16,7 @@ struct HemicubeRow {
   std::vector<double> F;
   int sub_cell_receivers = 0;  // facing the hemicube, image under one cell (hidden or not)
   int sub_cell_missed = 0;     // of those, how many no cell centre fell in: F = 0
+  double sub_cell_share = 0;   // the share of the hemicube's 3 r^2 cells their images would cover
 };
 // `weights` must be of the resolution wanted; `buffer` is scratch memory kept between
 // rows. Throws std::invalid_argument for an invalid `from` (check); the polygons must
@@ -32,6 +33,14 @@ struct HemicubeMatrixStats {
   long long sub_cell_receivers = 0;
   long long sub_cell_missed = 0;
   int rows_with_sub_cell_receivers = 0;
+  double worst_sub_cell_share = 0;  // the largest HemicubeRow::sub_cell_share of any row
+  // One more row's counts into the totals (the matrix's rows, or shooting's one by one).
+  void add_row(int receivers, int missed, double share) {
+    sub_cell_receivers += receivers;
+    sub_cell_missed += missed;
+    rows_with_sub_cell_receivers += receivers > 0;
+    worst_sub_cell_share = share > worst_sub_cell_share ? share : worst_sub_cell_share;
+  }
 };
 
 // The whole matrix, one hemicube per polygon, rows in parallel on `threads` threads

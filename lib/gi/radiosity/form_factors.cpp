@@ -78,7 +78,7 @@ FormFactorRow row_hemicube(const FormFactorScene& scene, const Polygon& from, in
   thread_local ItemBuffer buffer;
   if (weights.resolution != resolution) weights = hemicube_weights(resolution);
   const HemicubeRow row = hemicube_row(scene.polygons(), from, weights, buffer);
-  return {row.F, {}, row.sub_cell_receivers, row.sub_cell_missed};
+  return {row.F, {}, row.sub_cell_receivers, row.sub_cell_missed, row.sub_cell_share};
 }
 
 }  // namespace
@@ -150,10 +150,11 @@ std::vector<double> form_factor_row(const FormFactorScene& scene, const Polygon&
   return form_factor_row_with_diagnostics(scene, from, row, settings).F;
 }
 
-FormFactorMatrix form_factor_matrix(const FormFactorScene& scene, const FormFactorSettings& settings, int threads) {
+FormFactorMatrix form_factor_matrix(const FormFactorScene& scene, const FormFactorSettings& settings, int threads,
+                                    HemicubeMatrixStats* hemicube) {
   check(settings);
   if (settings.method == FormFactorMethod::Hemicube)  // one set of weights, buffers reused per block of rows
-    return form_factor_matrix_hemicube(scene.polygons(), settings.hemicube_resolution, threads);
+    return form_factor_matrix_hemicube(scene.polygons(), settings.hemicube_resolution, threads, hemicube);
   const int n = static_cast<int>(scene.polygons().size());
   FormFactorMatrix F{n, std::vector<double>(static_cast<std::size_t>(n) * n)};
   parallel_for(n, threads, [&](int i) {

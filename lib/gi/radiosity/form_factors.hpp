@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "gi/accel/world.hpp"
+#include "gi/radiosity/form_factor_hemicube.hpp"
 #include "gi/radiosity/form_factor_matrix.hpp"
 #include "gi/radiosity/polygon.hpp"
 
@@ -78,12 +79,16 @@ struct FormFactorRow {
                               // (binomial, an upper bound with stratification); empty otherwise
   int sub_cell_receivers = 0;  // Hemicube: receivers whose image is smaller than a cell (aliased)
   int sub_cell_missed = 0;     // Hemicube: of those, how many got no cell at all (F = 0)
+  double sub_cell_share = 0;   // Hemicube: the share of its cells their images would cover
 };
 FormFactorRow form_factor_row_with_diagnostics(const FormFactorScene& scene, const Polygon& from, int row,
                                                const FormFactorSettings& settings);
 
 // Every row, from every polygon of the scene to every other, in parallel (0: all cores).
-FormFactorMatrix form_factor_matrix(const FormFactorScene& scene, const FormFactorSettings& settings, int threads);
+// `hemicube`, when given, receives the hemicube's count of receivers smaller than a cell
+// (left at zero by the other methods, which have no cells).
+FormFactorMatrix form_factor_matrix(const FormFactorScene& scene, const FormFactorSettings& settings, int threads,
+                                    HemicubeMatrixStats* hemicube = nullptr);
 
 // Monte Carlo's row (form_factor_monte_carlo.cpp); form_factor_row calls it.
 std::vector<double> form_factor_row_monte_carlo(const FormFactorScene& scene, const Polygon& from, int row,

@@ -90,6 +90,8 @@ vec3 bilinear(const std::array<vec3, 4>& c, double s, double t) {
   return (1 - s) * (1 - t) * c[0] + s * (1 - t) * c[1] + s * t * c[2] + (1 - s) * t * c[3];
 }
 
+// (s, t) with bilinear(c, s, t) = p for a point p of a flat convex quadrilateral, by
+// Newton's method from the middle: the map is nearly affine, three steps suffice.
 vec2 unbilinear(const std::array<vec3, 4>& c, const vec3& n, const vec3& p) {
   vec2 st(0.5, 0.5);
   for (int step = 0; step < 4; ++step) {

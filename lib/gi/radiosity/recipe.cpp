@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "gi/core/timer.hpp"
@@ -29,6 +30,17 @@ std::string describe(const Recipe& r) {
   return light + ", " + name(r.solver);
 }
 
+std::string hemicube_warning(const RecipeResult& result) {
+  const HemicubeMatrixStats& s = result.hemicube;
+  if (s.worst_sub_cell_share <= hemicube_aliasing_limit) return "";
+  char share[32];
+  std::snprintf(share, sizeof share, "%.1f%%", 100 * s.worst_sub_cell_share);
+  return "warning: hemicube " + std::to_string(result.form_factors.hemicube_resolution) + ": in the worst row " +
+         share + " of the cells fall to receivers smaller than a cell, each given a whole cell or none (" +
+         std::to_string(s.sub_cell_missed) + " got none, over " + std::to_string(s.rows_with_sub_cell_receivers) +
+         " rows): raise the resolution or coarsen the mesh";
+}
+
 int hemicube_resolution_for(const Mesh& mesh) {
   double area = 0;
   vec3 lo(1e300), hi(-1e300);
@@ -37,7 +49,7 @@ int hemicube_resolution_for(const Mesh& mesh) {
     for (const vec3& c : e.shape.corners) lo = min(lo, c), hi = max(hi, c);
   }
   const double side = std::sqrt(area / double(mesh.elements.size())), size = length(hi - lo) / std::sqrt(3.0);
-  const int cells = static_cast<int>(std::ceil(4 * size / side));
+  const int cells = static_cast<int>(std::ceil(2.5 * 2 * size / side));
   return std::clamp(cells + cells % 2, 100, 1000);
 }
 
@@ -104,7 +116,8 @@ RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& re
     throw std::invalid_argument("solve_recipe: " + std::to_string(n) + " elements is too many for a stored matrix");
   const FormFactorScene receivers(element_shapes(mesh));
   Timer timer;
-  RadiositySystem system = make_system(mesh, shooting ? FormFactorMatrix{} : form_factor_matrix(receivers, r.form_factors, r.threads));
+  RadiositySystem system = make_system(
+      mesh, shooting ? FormFactorMatrix{} : form_factor_matrix(receivers, r.form_factors, r.threads, &result.hemicube));
   result.form_factor_seconds = timer.seconds();
 
   timer.restart();
@@ -122,8 +135,10 @@ RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& re
   const ShooterRow row = [&](int p) {
     if (rows[p].empty()) {
       const Timer row_timer;
-      rows[p] = form_factor_row(receivers, mesh.patches[p].shape, p, r.form_factors);
+      FormFactorRow shot = form_factor_row_with_diagnostics(receivers, mesh.patches[p].shape, p, r.form_factors);
       row_seconds += row_timer.seconds();
+      rows[p] = std::move(shot.F);
+      result.hemicube.add_row(shot.sub_cell_receivers, shot.sub_cell_missed, shot.sub_cell_share);
     }
     return rows[p];
   };

@@ -45,6 +45,7 @@ struct RecipeResult {
   std::vector<Color> direct;      // D, exact_direct only: B - E - D is what bounced more than once
   SolveStatus status = SolveStatus::StoppedAtLimit;
   FormFactorSettings form_factors;  // as used: the hemicube's resolution filled in
+  HemicubeMatrixStats hemicube;     // receivers smaller than a hemicube cell, over the rows computed
   double form_factor_seconds = 0;  // the matrix (for progressive: the rows, as they are shot; hierarchical: refinement)
   double direct_seconds = 0;       // direct_radiosity (0 without exact_direct)
   double solve_seconds = 0;        // the solver, form factors excluded
@@ -56,10 +57,20 @@ struct RecipeResult {
 // elements (its n x n matrix would pass 3 GB).
 RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe);
 
+// A receiver whose image is smaller than one hemicube cell gets a whole cell's dF or
+// nothing: its form factor is aliased. A few such receivers average out; when in some row
+// more than `hemicube_aliasing_limit` of the cells fall to them, hemicube_warning returns
+// one line saying so (the resolution, the worst row's share, how many got no cell at
+// all), for a lesson to print under its table; otherwise "".
+inline constexpr double hemicube_aliasing_limit = 0.01;
+std::string hemicube_warning(const RecipeResult& result);
+
 // The hemicube resolution for a mesh: cells small enough that an element a scene's
-// size away still covers about two across, 2 * 2 L / s with s the mean element's side
-// and L the scene's bounding-box diagonal over sqrt(3), rounded up to even, at least
-// 100 and at most 1000.
+// size away still covers two and a half across, 2.5 * 2 L / s with s the mean element's
+// side and L the scene's bounding-box diagonal over sqrt(3) (the top face is 2 wide at
+// distance 1), rounded up to even, at least 100 and at most 1000. Two across left 1.3%
+// of the worst row's cells to receivers smaller than a cell on the Cornell box at 4 300
+// elements, past hemicube_aliasing_limit; two and a half stays under it.
 int hemicube_resolution_for(const Mesh& mesh);
 
 }  // namespace gi

@@ -5,11 +5,15 @@
 #include <cerrno>
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include "gi/core/atomic_file.hpp"
 #include "gi/core/not_implemented.hpp"
 #include "gi/image/image_io.hpp"
+#include "gi/report/lessons_index.hpp"
+#include "gi/report/page_assets.hpp"
+#include "gi/report/report_page.hpp"
 #include "gi/scene/builtin_scenes.hpp"
 #include "gi/scene/scene_file.hpp"
 
@@ -134,8 +138,9 @@ void Lesson::prepare_folder() {
   for (const fs::directory_entry& entry : fs::directory_iterator(out_, error))
     if (abandoned(entry.path())) fs::remove(entry.path(), error);
   // The record of an earlier run would describe files this run may not write: a run
-  // that is killed leaves no record, rather than a wrong one.
+  // that is killed leaves no record, rather than a wrong one, and no page of it.
   fs::remove(out_ / "outputs.json", error);
+  fs::remove(out_ / "index.html", error);
 }
 
 int Lesson::run(int argc, const char* const* argv, const std::function<void()>& body) {
@@ -154,11 +159,15 @@ int Lesson::run(int argc, const char* const* argv, const std::function<void()>& 
     code = report_failure(name_, status);
   }
   if (started) {
-    try {
-      write_record(status);
-    } catch (const std::exception& e) {
-      if (code == 0) std::cerr << name_ << ": error: " << e.what() << '\n';
-      if (code == 0) code = 1;
+    // The record first: the pages are made from it. A failure here after a failure
+    // in the body adds no second line.
+    for (const auto& write : {&Lesson::write_record, &Lesson::write_pages}) {
+      try {
+        (this->*write)(status);
+      } catch (const std::exception& e) {
+        if (code == 0) std::cerr << name_ << ": error: " << e.what() << '\n';
+        if (code == 0) code = 1;
+      }
     }
   }
   return code;
@@ -182,6 +191,18 @@ void Lesson::write_record(const std::string& status) const {
   write_atomically(out_ / "outputs.json", [&](std::ostream& out) { out << json; });
 }
 
+// The folder above holds an index of lessons when this folder is named after the
+// lesson, as out/<lesson> is: a folder given by --out under another name may sit
+// anywhere (/tmp), and no index is written beside it.
+void Lesson::write_pages(const std::string& status) const {
+  const fs::path folder = fs::absolute(out_).lexically_normal();
+  const fs::path named = folder.has_filename() ? folder : folder.parent_path();
+  const bool in_index = named.filename() == name_;
+  const std::string page = report_page({name_, options_.summary(), status, command_, in_index}, outputs_);
+  write_atomically(out_ / "index.html", [&](std::ostream& out) { out << page; });
+  if (in_index) update_lessons_index(named.parent_path());
+}
+
 void Lesson::picture(const Image& radiance, const std::string& stem, const std::string& caption, const View& view,
                      double exposure, const Image* shown) {
   write_png(shown ? *shown : radiance, path(stem + ".png"), exposure);
@@ -202,6 +223,7 @@ void Lesson::diagram(const Image& image, const std::string& stem, const std::str
 void Lesson::table(const Table& table, const std::string& stem) {
   table.print();
   file(stem + ".csv", OutputKind::Table, table.title(), [&](const fs::path& p) { table.write_csv(p); });
+  outputs_.back().table = table.text();
 }
 
 void Lesson::chart(const Chart& chart, const std::string& stem) {
@@ -212,6 +234,18 @@ void Lesson::file(const std::string& name, OutputKind kind, const std::string& c
                   const std::function<void(const fs::path&)>& write) {
   write(path(name));
   record(name, kind, caption);
+}
+
+void Lesson::viewer(const std::string& caption, const std::function<void(const fs::path&)>& write_data) {
+  for (const Output& o : outputs_)
+    if (o.kind == OutputKind::Viewer) throw std::logic_error("a lesson has one viewer: viewer.html is written already");
+  file("viewer_data.js", OutputKind::Data, "the data the viewer shows", write_data);
+  for (const std::string& name : viewer_asset_names()) {
+    const std::string_view contents = page_asset(name);
+    const OutputKind kind = name == "viewer.html" ? OutputKind::Viewer : OutputKind::Page;
+    file(name, kind, kind == OutputKind::Viewer ? caption : "copied from docs/viewer/",
+         [&](const fs::path& p) { write_atomically(p, [&](std::ostream& out) { out << contents; }); });
+  }
 }
 
 void Lesson::record(const fs::path& file, OutputKind kind, const std::string& caption) {

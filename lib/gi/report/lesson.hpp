@@ -56,7 +56,10 @@ class Lesson {
 
   // Parses the command line, runs the checks, makes sure the output folder can be
   // created and written, runs `body`, then checks that every file it wrote is in
-  // place and writes outputs.json. Returns the exit status:
+  // place and writes outputs.json and the report page, index.html, made from it
+  // (report_page.hpp); a folder named after the lesson (out/08_radiosity_system)
+  // also updates the index of lessons in the folder above (lessons_index.hpp).
+  // Returns the exit status:
   //   0  done, every file written is in place (also after --help)
   //   1  a failure while running: an error, a full disk, a file missing at the end
   //   2  a bad command line or configuration, found before any work
@@ -83,6 +86,10 @@ class Lesson {
   // Any other file, written by `write` to the path it is given (e.g. write_ply).
   void file(const std::string& name, OutputKind kind, const std::string& caption,
             const std::function<void(const std::filesystem::path&)>& write);
+  // The interactive viewer (docs/viewer/): viewer.html and its scripts are copied
+  // in, and `write_data` writes the data it shows to the path it is given
+  // (viewer_data.js; lib/gi/radiosity/viewer_data.hpp). One per lesson.
+  void viewer(const std::string& caption, const std::function<void(const std::filesystem::path&)>& write_data);
   // A file some library function wrote into out() (a cached reference).
   void record(const std::filesystem::path& file, OutputKind kind, const std::string& caption);
   // Prints one line on stdout and records it.
@@ -95,6 +102,7 @@ class Lesson {
   void prepare_folder();
   void check_outputs() const;
   void write_record(const std::string& status) const;
+  void write_pages(const std::string& status) const;
 
   std::string name_;
   Options options_;

@@ -49,6 +49,7 @@ class Options {
   // out of range.
   bool parse(int argc, const char* const* argv);
   std::string help() const;
+  const std::string& summary() const { return summary_; }
 
  private:
   struct Option {

@@ -15,6 +15,9 @@ std::string kind_name(OutputKind kind) {
     case OutputKind::Chart: return "chart";
     case OutputKind::Mesh: return "mesh";
     case OutputKind::Cache: return "cache";
+    case OutputKind::Viewer: return "viewer";
+    case OutputKind::Data: return "data";
+    case OutputKind::Page: return "page";
   }
   return "?";
 }

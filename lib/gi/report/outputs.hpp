@@ -1,9 +1,11 @@
 #pragma once
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "gi/report/table.hpp"
 #include "gi/scene/camera.hpp"
 
 namespace gi {
@@ -26,6 +28,9 @@ enum class OutputKind {
   Chart,    // SVG
   Mesh,     // PLY
   Cache,    // a cached result the lesson read or made (a reference image)
+  Viewer,   // an interactive page (viewer.html, docs/viewer/) that shows a Data file
+  Data,     // what an interactive page reads (viewer_data.js)
+  Page,     // a file a page needs: a script or a style sheet copied from docs/viewer/
 };
 std::string kind_name(OutputKind kind);  // "text", "table", "picture" ...
 
@@ -38,6 +43,7 @@ struct Output {
   std::uintmax_t linear_bytes = 0;
   double exposure = 1;          // Picture: the PNG shows clamp(exposure * radiance)
   View view;                    // Picture
+  std::optional<TableText> table;  // Table: its cells as printed, for the report page (not in the JSON)
 };
 
 // The record as JSON (outputs.json in the lesson's folder): the lesson, its command

@@ -54,41 +54,41 @@ void Table::add_row(std::vector<Cell> cells) {
   rows_.push_back(std::move(cells));
 }
 
-std::string Table::to_string() const {
-  // Text cells align left, numbers right; each column is as wide as its widest entry.
-  std::vector<std::vector<std::string>> text(rows_.size());
-  std::vector<std::size_t> width(columns_.size());
-  for (std::size_t c = 0; c < columns_.size(); ++c) width[c] = columns_[c].name.size();
+TableText Table::text() const {
+  TableText t{title_, {}, std::vector<std::vector<std::string>>(rows_.size()), std::vector<bool>(columns_.size(), false)};
+  for (const Column& column : columns_) t.header.push_back(column.name);
   for (std::size_t r = 0; r < rows_.size(); ++r)
     for (std::size_t c = 0; c < columns_.size(); ++c) {
-      text[r].push_back(cell_text(rows_[r][c], columns_[c]));
-      width[c] = std::max(width[c], text[r][c].size());
+      t.rows[r].push_back(cell_text(rows_[r][c], columns_[c]));
+      if (!std::holds_alternative<std::string>(rows_[r][c].value)) t.numeric[c] = true;
     }
+  return t;
+}
+
+std::string Table::to_string() const {
+  // Text cells align left, numbers right; each column is as wide as its widest entry.
+  const TableText t = text();
+  std::vector<std::size_t> width(columns_.size());
+  for (std::size_t c = 0; c < columns_.size(); ++c) width[c] = t.header[c].size();
+  for (const auto& row : t.rows)
+    for (std::size_t c = 0; c < columns_.size(); ++c) width[c] = std::max(width[c], row[c].size());
   auto pad = [](const std::string& s, std::size_t w, bool left) {
     const std::string space(w - s.size(), ' ');
     return left ? s + space : space + s;
   };
-  // A column holding any number is a numeric column: all its cells align right.
-  std::vector<bool> numeric(columns_.size(), false);
-  for (const auto& row : rows_)
-    for (std::size_t c = 0; c < columns_.size(); ++c)
-      if (!std::holds_alternative<std::string>(row[c].value)) numeric[c] = true;
   auto line = [&](const std::vector<std::string>& cells) {
     std::string s;
-    for (std::size_t c = 0; c < cells.size(); ++c) s += (c ? "  " : "") + pad(cells[c], width[c], !numeric[c]);
+    for (std::size_t c = 0; c < cells.size(); ++c) s += (c ? "  " : "") + pad(cells[c], width[c], !t.numeric[c]);
     while (!s.empty() && s.back() == ' ') s.pop_back();
     return s + '\n';
   };
   std::ostringstream os;
   if (!title_.empty()) os << title_ << '\n';
-  std::vector<std::string> header;
-  for (const Column& column : columns_) header.push_back(column.name);
-  const std::string header_line = line(header);
-  os << header_line;
+  os << line(t.header);
   std::size_t total = 0;
   for (std::size_t c = 0; c < columns_.size(); ++c) total += width[c] + (c ? 2 : 0);
   os << std::string(total, '-') << '\n';
-  for (const auto& cells : text) os << line(cells);
+  for (const auto& cells : t.rows) os << line(cells);
   return os.str();
 }
 

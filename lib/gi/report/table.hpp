@@ -28,6 +28,15 @@ struct Cell {
   Cell(std::string v) : value(std::move(v)) {}
 };
 
+// A table as it prints, cell by cell, for pages that lay it out themselves (HTML).
+// A column holding any number is numeric: its cells align right.
+struct TableText {
+  std::string title;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  std::vector<bool> numeric;
+};
+
 // The lessons' tables: printed aligned to stdout, and written as CSV for plotting.
 class Table {
  public:
@@ -35,6 +44,7 @@ class Table {
   void add_row(std::vector<Cell> cells);  // throws std::invalid_argument on a wrong cell count
   void print(std::ostream& os = std::cout) const;
   std::string to_string() const;
+  TableText text() const;
   const std::string& title() const { return title_; }
   // Creates parent folders; atomic (gi/core/atomic_file.hpp); throws WriteError.
   void write_csv(const std::filesystem::path& file) const;

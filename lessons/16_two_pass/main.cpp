@@ -1,0 +1,232 @@
+// Lesson 16 -- two-pass rendering: radiosity for the view-independent diffuse
+// interreflection, ray tracing for what depends on the view (Chen, Rushmeier, Miller
+// and Turner 1991). Pass 1 solves the diffuse surfaces by progressive radiosity; pass 2
+// traces eye rays through mirror and glass and, at the first diffuse surface, adds
+// direct light by shadow rays to the indirect light from the mesh -- read off it, or
+// gathered one bounce later. Every picture against the converged path-traced one.
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gi/core/timer.hpp"
+#include "gi/image/diff.hpp"
+#include "gi/pathtrace/path_scenes.hpp"
+#include "gi/pathtrace/reference.hpp"
+#include "gi/radiosity/display.hpp"
+#include "gi/report/lesson.hpp"
+#include "gi/report/table.hpp"
+#include "gi/twopass/picture_mask.hpp"
+#include "gi/twopass/radiosity_pass.hpp"
+#include "gi/twopass/two_pass.hpp"
+
+namespace {
+
+struct Settings {
+  std::string scene = "both";
+  int width = 128, height = 128, threads = 0;
+  std::uint64_t seed = 1;
+  gi::RadiosityPassSettings radiosity;
+  gi::TwoPassSettings eye;
+};
+
+gi::View view_of(const gi::TwoPassScene& scene, const Settings& s) {
+  const std::string n = std::to_string(s.eye.samples);
+  return {scene.camera, s.width, s.height, n + " x " + n + " jittered eye rays, box filter"};
+}
+
+// The converged path-traced picture kept in lessons/references/ (14_make_reference),
+// averaged down to the lesson's size; nothing (and the reason) if there is none.
+std::optional<gi::PathReference> stored_reference(const Settings& s, std::string& why) {
+  const int stored = s.scene == "cornell" ? 256 : 128;
+  if (s.width != s.height || stored % s.width != 0) {
+    why = "the stored reference is " + std::to_string(stored) + " x " + std::to_string(stored) +
+          ": a square size that divides it is scored";
+    return std::nullopt;
+  }
+  const gi::PathScene path_scene = gi::make_path_scene(gi::make_path_scene_by_name(s.scene));
+  const std::string stem = s.scene + "_" + std::to_string(stored) + "x" + std::to_string(stored);
+  auto truth = gi::load_reference(std::string(GI_SOURCE_DIR) + "/lessons/references/" + stem,
+                                  gi::reference_fingerprint(path_scene, {}, stored, stored), &why);
+  if (truth && stored != s.width) truth = gi::downsample(*truth, stored / s.width);
+  return truth;
+}
+
+struct Picture {
+  std::string method;
+  gi::Image radiance;
+  double pass1_seconds, pass2_seconds;
+};
+
+// Radiosity alone: the mesh's B / pi through every pixel (display.hpp), smooth shading.
+// The mesh has no spheres: they are shadows on the walls and nothing else.
+Picture radiosity_alone(const Settings& s, const gi::TwoPassScene& scene, const gi::RadiosityPass& pass) {
+  gi::DisplaySettings display;
+  display.width = s.width, display.height = s.height, display.samples = s.eye.samples;
+  display.threads = s.threads, display.seed = s.seed;
+  const gi::Timer timer;
+  const gi::FormFactorScene elements(gi::element_shapes(pass.handoff.mesh));
+  gi::Image radiosity =
+      gi::render_radiosity_picture(elements, pass.handoff.mesh, pass.handoff.B, scene.camera, display).radiance;
+  return {"radiosity alone", std::move(radiosity), pass.seconds(), timer.seconds()};
+}
+
+// 1. The four pictures: the ray tracer alone, radiosity alone, and the two passes with
+//    the indirect light read off the mesh and gathered. Pass 1 is shared by the last three.
+std::vector<Picture> render_all(const Settings& s, const gi::TwoPassScene& scene, const gi::RadiosityPass& pass,
+                                gi::Lesson& lesson) {
+  std::vector<Picture> pictures;
+  const auto eye_pass = [&](gi::IndirectLight indirect, double pass1) {
+    gi::TwoPassSettings eye = s.eye;
+    eye.indirect = indirect;
+    const gi::Timer timer;
+    gi::Image picture = gi::render_two_pass(scene, pass.handoff, eye);
+    return Picture{"", std::move(picture), pass1, timer.seconds()};
+  };
+  pictures.push_back(eye_pass(gi::IndirectLight::Ambient, 0));
+  pictures.back().method = "ray traced, constant ambient";
+
+  pictures.push_back(radiosity_alone(s, scene, pass));
+
+  pictures.push_back(eye_pass(gi::IndirectLight::Mesh, pass.seconds()));
+  pictures.back().method = "two-pass, indirect from the mesh";
+  pictures.push_back(eye_pass(gi::IndirectLight::FinalGather, pass.seconds()));
+  pictures.back().method = "two-pass, final gather";
+
+  const gi::View view = view_of(scene, s);
+  const char* stems[] = {"ray_traced", "radiosity", "two_pass_mesh", "two_pass_gather"};
+  for (std::size_t i = 0; i < pictures.size(); ++i)
+    lesson.picture(pictures[i].radiance, s.scene + "_" + stems[i], pictures[i].method, view, 2);
+  return pictures;
+}
+
+// 2. Each picture against the path-traced truth: over the interior blocks of the
+//    diffuse surfaces (picture_mask.hpp), and over the whole picture in 8 x 8 blocks
+//    (edges, the light and the spheres included).
+void score(const Settings& s, const gi::TwoPassScene& scene, const std::vector<Picture>& pictures,
+           const gi::PathReference& truth, const gi::BlockMask& mask, gi::Lesson& lesson) {
+  const gi::PictureError noise = gi::reference_noise(truth.standard_error, truth.mean, mask);
+  gi::Table table("The " + scene.name + " box against the path-traced truth (" + std::to_string(truth.spp) +
+                      " spp; its own noise " + gi::format_number(100 * noise.relative_rms, 2, gi::Format::Fixed) +
+                      "% on the " + std::to_string(mask.count()) + " interior 8x8 blocks)",
+                  {{"method"}, {"pass 1 s", 2}, {"pass 2 s", 2}, {"total s", 2},
+                   {"interior relative RMS %", 2}, {"interior block relative %", 2}, {"whole picture 8x8 %", 2}});
+  for (const Picture& p : pictures) {
+    const gi::PictureError e = gi::picture_error(p.radiance, truth.mean, mask);
+    table.add_row({p.method, p.pass1_seconds, p.pass2_seconds, p.pass1_seconds + p.pass2_seconds,
+                   100 * e.relative_rms, 100 * e.block_relative,
+                   100 * gi::relative_rms_error(p.radiance, truth.mean, 8)});
+  }
+  lesson.table(table, s.scene + "_against_truth");
+}
+
+// 3. The claim: on the diffuse box, two-pass with the final gather is closer to the
+//    truth than radiosity alone given the same time. Radiosity alone gets finer meshes
+//    (x 1.5 elements each) until it has taken at least as long as the gather did.
+void equal_time(const Settings& s, const gi::TwoPassScene& scene, const Picture& gather, int elements,
+                const gi::Image& truth, const gi::BlockMask& mask, gi::Lesson& lesson) {
+  const double budget = gather.pass1_seconds + gather.pass2_seconds;
+  gi::Table table("Equal time on the diffuse box: radiosity alone on finer meshes until it has taken as long as "
+                  "two-pass with the final gather (" + gi::format_number(budget, 2, gi::Format::Fixed) + " s)",
+                  {{"method"}, {"elements"}, {"total s", 2}, {"interior relative RMS %", 2}});
+  const gi::PictureError g = gi::picture_error(gather.radiance, truth, mask);
+  table.add_row({gather.method, elements, budget, 100 * g.relative_rms});
+  gi::RadiosityPassSettings finer = s.radiosity;
+  for (int round = 0; round < 8; ++round) {
+    finer.elements = finer.elements * 3 / 2;
+    const gi::RadiosityPass pass = gi::radiosity_pass(scene, finer);
+    const Picture alone = radiosity_alone(s, scene, pass);
+    const double seconds = alone.pass1_seconds + alone.pass2_seconds;
+    table.add_row({alone.method, static_cast<int>(pass.handoff.mesh.elements.size()), seconds,
+                   100 * gi::picture_error(alone.radiance, truth, mask).relative_rms});
+    if (seconds >= budget) break;
+  }
+  lesson.table(table, "equal_time");
+}
+
+// 4. Where each fails, side by side with the truth, enlarged: squares given as
+//    fractions of the picture (they scale with --width).
+struct CropPlace {
+  std::string stem, caption;
+  double x, y;  // the square's top-left corner, fraction of width and height
+};
+
+void crops(const Settings& s, const std::vector<Picture>& pictures, const gi::Image& truth, gi::Lesson& lesson) {
+  const std::vector<CropPlace> places =
+      s.scene == "cornell"
+          ? std::vector<CropPlace>{{"shadow", "the floor between the blocks: their shadows", 0.36, 0.70},
+                                   {"corner", "the ceiling by the green wall: the gather's noise", 0.70, 0.10}}
+          : std::vector<CropPlace>{{"caustic", "under the glass sphere: the caustic", 0.53, 0.64},
+                                   {"mirror", "the mirror sphere", 0.2, 0.55}};
+  const int side = std::min({std::max(8, s.width / 6), s.width, s.height}), factor = std::max(1, 128 / side);
+  for (const CropPlace& place : places) {
+    std::vector<gi::Image> row;
+    const int x = std::min(static_cast<int>(place.x * s.width), s.width - side);
+    const int y = std::min(static_cast<int>(place.y * s.height), s.height - side);
+    for (const Picture& p : pictures) row.push_back(gi::enlarge(gi::crop(p.radiance, x, y, side, side), factor));
+    row.push_back(gi::enlarge(gi::crop(truth, x, y, side, side), factor));
+    lesson.diagram(gi::side_by_side(row), s.scene + "_crop_" + place.stem,
+                   place.caption + ": ray traced, radiosity, two-pass mesh, two-pass gather, path traced", 2);
+  }
+}
+
+// Everything above for one scene.
+void two_pass_lesson(const Settings& s, gi::Lesson& lesson) {
+  const gi::TwoPassScene scene = gi::make_two_pass_scene(s.scene);
+  const gi::RadiosityPass pass = gi::radiosity_pass(scene, s.radiosity);
+  lesson.say(s.scene + ", pass 1: " + std::to_string(pass.handoff.mesh.elements.size()) + " elements, hemicube " +
+             std::to_string(pass.hemicube_resolution) + ", " + std::to_string(pass.shots) + " shots, " +
+             gi::status_name(pass.status));
+  const std::vector<Picture> pictures = render_all(s, scene, pass, lesson);
+  std::string why;
+  const auto truth = stored_reference(s, why);
+  if (!truth) {
+    lesson.say("no path-traced picture of " + s.scene + " to score against (" + why + ")");
+    return;
+  }
+  const gi::View view{scene.camera, s.width, s.height, "the stored reference, averaged down"};
+  lesson.picture(truth->mean, s.scene + "_path_traced", "the path-traced truth (lessons/references/)", view, 2);
+  const gi::BlockMask mask = gi::diffuse_interior_blocks(scene, s.width, s.height, 8);
+  if (mask.count() == 0) {
+    lesson.say("no 8x8 block of " + s.scene + " lies inside one diffuse surface at this size: nothing to score");
+    return;
+  }
+  score(s, scene, pictures, *truth, mask, lesson);
+  if (scene.spheres.empty()) equal_time(s, scene, pictures.back(), static_cast<int>(pass.handoff.mesh.elements.size()), truth->mean, mask, lesson);
+  crops(s, pictures, truth->mean, lesson);
+  std::vector<gi::Image> row;
+  for (const Picture& p : pictures) row.push_back(p.radiance);
+  row.push_back(truth->mean);
+  lesson.diagram(gi::side_by_side(row), s.scene + "_side_by_side",
+                 "ray traced, radiosity, two-pass mesh, two-pass gather, path traced", 2);
+  lesson.diagram(gi::difference_image(pictures.back().radiance, truth->mean, 0.1), s.scene + "_gather_difference",
+                 "|two-pass with final gather - path traced|, mean over channels: black 0, red 0.1 (radiance)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  gi::Lesson lesson("16_two_pass", "Two-pass rendering: radiosity for the diffuse interreflection, ray tracing for "
+                                   "mirrors, glass and sharp shadows, scored against the path-traced truth.");
+  Settings s;
+  lesson.add_image_size(s.width, s.height);
+  lesson.options()
+      .add("--scene", s.scene, "what to render: both boxes, or one", {"both", "cornell", "cornell-spheres"})
+      .add("--elements", s.radiosity.elements, "about how many radiosity elements", 10, 20000)
+      .add("--samples", s.eye.samples, "n x n eye rays per pixel", 1, 16)
+      .add("--light-cells", s.eye.light_cells, "n x n shadow rays per light at each diffuse hit", 1, 64)
+      .add("--gather", s.eye.gather_strata, "n x n final-gather rays at each diffuse hit", 1, 64);
+  return lesson.run(argc, argv, [&] {
+    s.threads = s.radiosity.threads = s.eye.threads = lesson.threads();
+    s.seed = s.radiosity.seed = s.eye.seed = lesson.seed();
+    s.eye.width = s.width, s.eye.height = s.height;
+    s.radiosity.form_factors.hemicube_resolution = 0;  // from the mesh
+    const std::vector<std::string> names =
+        s.scene == "both" ? gi::two_pass_scene_names() : std::vector<std::string>{s.scene};
+    for (const std::string& name : names) {
+      Settings one = s;
+      one.scene = name;
+      two_pass_lesson(one, lesson);
+    }
+  });
+}

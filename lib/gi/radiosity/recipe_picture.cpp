@@ -1,0 +1,19 @@
+#include "gi/radiosity/recipe_picture.hpp"
+
+#include <stdexcept>
+
+#include "gi/radiosity/direct_display.hpp"
+
+namespace gi {
+
+Image recipe_picture(const RecipeResult& result, const Camera& camera, const DisplaySettings& display,
+                     bool direct_per_pixel, const DirectLightSettings& direct) {
+  const FormFactorScene elements(element_shapes(result.mesh));
+  if (!direct_per_pixel) return render_radiosity_picture(elements, result.mesh, result.B, camera, display).radiance;
+  if (result.direct.size() != result.B.size())
+    throw std::invalid_argument("recipe picture: the direct light per pixel needs a recipe solved with exact_direct");
+  // L = (E + rho H(x)) / pi per eye ray, plus (B - E - D) / pi from the mesh.
+  return render_split_picture(elements, result.mesh, result.B, result.direct, camera, display, direct);
+}
+
+}  // namespace gi
