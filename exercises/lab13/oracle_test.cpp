@@ -37,18 +37,25 @@ TEST(Ex13_1_Oracle, TheSourcesBrightnessRangeCounts) {
          "the mean B a link carries is wrong for every point when the source is not uniform";
 }
 
-TEST(Ex13_1_Oracle, SplitsTheEndThatLooksBigger) {
-  EXPECT_EQ(gi::oracle(link(0.3, 0.05, 0.1f, 0.5f), unit, 0.1, true, true), source)
-      << "F_pq >= F_qp: the source fills more of the receiver's view (A_q >= A_p by reciprocity), split the source";
-  EXPECT_EQ(gi::oracle(link(0.05, 0.3, 0.0f, 0.3f), unit, 0.1, true, true), receiver)
-      << "F_qp > F_pq: the receiver is the bigger end, split the receiver";
+TEST(Ex13_1_Oracle, SplitsTheEndTheErrorLivesIn) {
+  EXPECT_EQ(gi::oracle(link(0.3, 0.05, 0.1f, 0.5f), unit, 0.1, true, true), receiver)
+      << "F runs from 0.1 to 0.5 across the receiver and the source is uniform: split the receiver. The source "
+         "looks bigger (F_pq >= F_qp), but F is exact for a whole source: cutting it only shares the same error "
+         "among four links to this receiver";
+  EXPECT_EQ(gi::oracle(link(0.05, 0.3, 0.3f, 0.3f), {0.0, 0.5}, 0.1, true, true), source)
+      << "F is the same all over the receiver; the error is the source's range, dark to 0.5: split the source, "
+         "although the receiver looks bigger";
+  EXPECT_EQ(gi::oracle(link(0.3, 0.05, 0.28f, 0.32f, 0.5), unit, 0.1, true, true), source)
+      << "a shadow edge inside (V = 0.5): cut the end that looks bigger, here the source (F_pq >= F_qp)";
+  EXPECT_EQ(gi::oracle(link(0.05, 0.3, 0.28f, 0.32f, 0.5), unit, 0.1, true, true), receiver)
+      << "a shadow edge inside (V = 0.5) and F_qp > F_pq: the receiver is the bigger end, split it";
 }
 
 TEST(Ex13_1_Oracle, AnEndAtTheMinimumAreaLeavesTheOther) {
-  EXPECT_EQ(gi::oracle(link(0.3, 0.05, 0.1f, 0.5f), unit, 0.1, true, false), receiver)
-      << "the source should be split but is at the minimum area: split the receiver instead";
-  EXPECT_EQ(gi::oracle(link(0.05, 0.3, 0.0f, 0.3f), unit, 0.1, false, true), source)
+  EXPECT_EQ(gi::oracle(link(0.3, 0.05, 0.1f, 0.5f), unit, 0.1, false, true), source)
       << "the receiver should be split but is at the minimum area: split the source instead";
+  EXPECT_EQ(gi::oracle(link(0.05, 0.3, 0.3f, 0.3f), {0.0, 0.5}, 0.1, true, false), receiver)
+      << "the source should be split but is at the minimum area: split the receiver instead";
   EXPECT_EQ(gi::oracle(link(0.3, 0.05, 0.1f, 0.5f), unit, 0.1, false, false), accept)
       << "neither end can be split: accept the link as it is";
 }

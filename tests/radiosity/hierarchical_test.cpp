@@ -80,13 +80,12 @@ TEST(Hierarchical, InAClosedBoxTheSourcesOfEveryLeafTileTheBox) {
   // The sources of a leaf's links and of its ancestors' split the rest of the box
   // between them, each part once: seen from the leaf's centre their exact form factors
   // add up to 1 (to round-off). Each link's F is its own receiver's mean, though, not
-  // the leaf's centre's: their sum, the light the leaf gathers per unit B, is 1 on
-  // average over the area (0.001% off, measured) but 17% off at the worst leaf, in a
-  // corner, where the centre of a leaf at the minimum area sees its two neighbouring
-  // walls quite differently from the leaf's mean, and the errors of its ancestors'
-  // many links, each within the oracle's threshold, add up (measured at F_eps 0.05,
-  // BF_eps 1e-3, min area 1e-3). Asserted: the tiling within 1e-9, the mean within
-  // 0.1%, every leaf within 25%.
+  // the leaf's: their sum, the light the leaf gathers per unit B, is 1 on average over
+  // the area and within 0.36% at the worst leaf (measured at F_eps 0.05, BF_eps 1e-3,
+  // min area 1e-3), as the oracle cuts the receiver where F changes across it. (Cutting
+  // the end that looked bigger left the corner leaves' ancestors with many small
+  // sources, each link within the threshold, their errors adding up: 17% off.)
+  // Asserted: the tiling within 1e-9, the mean within 0.01%, every leaf within 1%.
   gi::Hierarchy h = gi::make_hierarchy(gi::closed_box().surfaces);
   const gi::HierarchicalResult r = solve(h, settings(0.05, 1e-3, 1e-3));
   ASSERT_EQ(r.solution.status, gi::SolveStatus::Converged);
@@ -105,31 +104,40 @@ TEST(Hierarchical, InAClosedBoxTheSourcesOfEveryLeafTileTheBox) {
     mean += node.shape.area * c, area += node.shape.area;
   }
   EXPECT_LT(worst_tiling, 1e-9) << "some leaf's sources leave part of the box out, or count it twice";
-  EXPECT_NEAR(mean / area, 1.0, 0.001) << "the links' F, area-weighted over the leaves";
-  EXPECT_LT(worst, 0.25) << "some leaf's links cover " << 1 - worst << " or " << 1 + worst << " of its view";
+  EXPECT_NEAR(mean / area, 1.0, 1e-4) << "the links' F, area-weighted over the leaves";
+  EXPECT_LT(worst, 0.01) << "some leaf's links cover " << 1 - worst << " or " << 1 + worst << " of its view";
 }
 
-TEST(Hierarchical, WhiteFurnaceGivesEOverOneMinusRhoAtEveryLeaf) {
-  // Every face emits E and reflects rho: B = E + rho B everywhere, B = E / (1 - rho).
-  // A leaf gathers with its links' F, which cover its view within the error of the
-  // test above: B is right on average (area-weighted mean within 1%) and at every leaf
-  // within 4% (1.9% measured, at a corner; at min area 1e-4 the corner leaves are
-  // smaller and worse, 13%: the errors of many links add up, docs/13).
+// Every face emits E and reflects rho: B = E + rho B everywhere, B = E / (1 - rho).
+// A leaf gathers rho B times the F of its links and its ancestors': B is exact where
+// they add up to 1. Each ancestor's link hands the leaf its own mean F, off the leaf's
+// by at most its spread across the receiver, below BF_eps / (rho B / E) = BF_eps here;
+// the oracle cuts the receiver for that spread, so a leaf deep in a corner sees its
+// sources from receivers near it. Measured: 0.29% at the worst leaf at minimum area
+// 1e-4 (a corner), 0.00% at 1e-3 (every link reaches a leaf); asserted 1% at every
+// leaf and 0.1% for the area-weighted mean (the links conserve power exactly). The
+// oracle that split the end that looked bigger gave 13% (1e-4) and 1.9% (1e-3).
+void expect_furnace(double min_area) {
   std::vector<gi::Surface> faces = gi::closed_box().surfaces;
   for (gi::Surface& f : faces) f.reflectance = Color(0.5), f.emission = Color(1.0);
   gi::Hierarchy h = gi::make_hierarchy(faces);
-  const gi::HierarchicalResult r = solve(h, settings(0.05, 1e-3, 1e-3));
+  const gi::HierarchicalResult r = solve(h, settings(0.1, 1e-2, min_area));
   ASSERT_EQ(r.solution.status, gi::SolveStatus::Converged);
   const std::vector<int> leaf = gi::leaves(h);
-  ASSERT_GT(leaf.size(), 100u);
+  ASSERT_GT(leaf.size(), 0.1 / min_area) << "the corners are cut down to the minimum area";
   Color mean(0.0);
   double area = 0;
   for (std::size_t k = 0; k < leaf.size(); ++k) {
     const Color& b = r.solution.B[k];
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(b[c], 2.0, 0.04 * 2.0) << "leaf " << k << ", channel " << c;
+    for (int c = 0; c < 3; ++c) ASSERT_NEAR(b[c], 2.0, 0.01 * 2.0) << "leaf " << k << ", channel " << c;
     mean += h.nodes[leaf[k]].shape.area * b, area += h.nodes[leaf[k]].shape.area;
   }
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c] / area, 2.0, 0.01 * 2.0) << "channel " << c;
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c] / area, 2.0, 0.001 * 2.0) << "channel " << c;
+}
+
+TEST(Hierarchical, WhiteFurnaceGivesEOverOneMinusRhoAtEveryLeaf) {
+  expect_furnace(1e-3);
+  expect_furnace(1e-4);
 }
 
 TEST(Hierarchical, EnergyBalanceInAClosedBox) {
