@@ -87,10 +87,11 @@ std::vector<Method> radiosity_methods(bool full) {
       {"direct per pixel + hemicube, Gauss-Seidel", sizes({}, {600, 1200}), per_pixel_hemicube, true},
   };
   // Lesson 13's hierarchical radiosity: no uniform mesh (the elements are its leaves),
-  // BF_eps 3e-3 at min area 1e-4, the direct light per pixel as above.
+  // BF_eps 3e-3 at lesson 13's min area 3e-4, the direct light per pixel as above.
   gi::Recipe hierarchical = per_pixel;
   hierarchical.solver = gi::RecipeSolver::Hierarchical;
   hierarchical.hierarchical.refinement.threshold = 3e-3;
+  hierarchical.hierarchical.refinement.min_area = 3e-4;
   list.push_back({"direct per pixel + hierarchical, BF_eps 3e-3", {0}, hierarchical, true});
   return list;
 }
