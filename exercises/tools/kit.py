@@ -60,8 +60,11 @@ def distinctive_lines(root, secret_regions):
         except UnicodeDecodeError:
             continue
         outside |= {line.strip() for i, line in enumerate(lines) if (rel, i) not in inside}
-    return {r.id: [line.strip() for line in regions.body(root, r)
-                   if len(line.strip()) >= 12 and line.strip() not in outside] for r in secret_regions}
+    secrets = {}  # an exercise and its KIT-HIDDEN companions share one id
+    for r in secret_regions:
+        secrets.setdefault(r.id, []).extend(line.strip() for line in regions.body(root, r)
+                                            if len(line.strip()) >= 12 and line.strip() not in outside)
+    return secrets
 
 
 def leaks(kit_dir, secrets):
@@ -88,30 +91,40 @@ def check_destination(root, dest, force):
         raise UsageError(f"{dest} exists and is not empty (--force replaces it)")
 
 
-def write_kit(root, folder, punched):
-    """Copies the project into `folder` and punches the regions out."""
+def write_kit(root, folder, punched, hidden=()):
+    """Copies the project into `folder` and punches the regions out (the exercises and
+    their KIT-HIDDEN companions)."""
     for rel in build.project_files(root):
         if instructor_only(rel):
             continue
         target = folder / rel
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(root / rel, target)
-    for rel in sorted({r.path for r in punched}):
+    out = list(punched) + list(hidden)
+    for rel in sorted({r.path for r in out}):
         path = folder / rel
-        path.write_text(regions.stub_text(path.read_text(), [r for r in punched if r.path == rel]))
+        path.write_text(regions.stub_text(path.read_text(), [r for r in out if r.path == rel]))
     problems = excerpts.process(folder, fix=True)
     if problems:
         raise KitError(f"the docs' code excerpts cannot be refreshed: {problems[0].splitlines()[0]}")
     (folder / "exercises" / "KIT").write_text("".join(f"{r.id} {r.title}\n" for r in punched))
 
 
-def check_kit_text(root, folder, punched):
+def check_kit_text(root, folder, punched, hidden=()):
     """Raises KitError unless every punched region is its stub and no solution is left."""
     stubbed = {r.id: r for r in regions.find_regions(folder)}
     for r in punched:
         if r.id not in stubbed or regions.body(folder, stubbed[r.id]) != [r.stub()]:
             raise KitError(f"exercise {r.id} is not stubbed in the kit")
-    found = leaks(folder, distinctive_lines(root, punched))
+    # Matched by their order in each file: stubbing moves the lines.
+    in_kit = regions.find_companions(folder, stubbed.values())
+    for path in sorted({r.path for r in hidden}):
+        mine = [r for r in hidden if r.path == path]
+        theirs = [regions.body(folder, r) for r in in_kit if r.path == path] + [None] * len(mine)
+        for r, body in zip(mine, theirs):
+            if body != [r.stub()]:
+                raise KitError(f"{r.path}:{r.begin + 1}: the code hidden with exercise {r.id} is left in the kit")
+    found = leaks(folder, distinctive_lines(root, list(punched) + list(hidden)))
     if found:
         where, ident = found[0]
         raise KitError(f"solution text of exercise {ident} left at {where} ({len(found)} line(s) in all)")
@@ -138,6 +151,7 @@ def make_kit(root, dest, labs_spec, force=False):
     except regions.RegionError as e:
         raise UsageError(str(e))
     punched = [r for r in all_regions if r.lab in labs]
+    hidden = [r for r in regions.find_companions(root, all_regions) if r.lab in labs]
     try:
         dest.parent.mkdir(parents=True, exist_ok=True)
         for stale in dest.parent.glob(f".{dest.name}.partial-*"):  # left by a run that was killed
@@ -146,8 +160,8 @@ def make_kit(root, dest, labs_spec, force=False):
     except OSError as e:
         raise KitError(f"cannot write in {dest.parent}: {e.strerror}")
     try:
-        write_kit(root, temp, punched)
-        check_kit_text(root, temp, punched)
+        write_kit(root, temp, punched, hidden)
+        check_kit_text(root, temp, punched, hidden)
         move_into_place(temp, dest)
     except OSError as e:
         raise KitError(f"cannot write the kit in {dest.parent}: {e.strerror}; no kit was made")

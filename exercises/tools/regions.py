@@ -13,6 +13,14 @@ from pathlib import Path
 
 BEGIN = re.compile(r"^(\s*)// BEGIN EXERCISE (\d+)\.(\d+) (.+?)\s*$")
 END = re.compile(r"^\s*// END EXERCISE (\d+)\.(\d+)\s*$")
+# Code that is no exercise but would show a student the answer to one (a production
+# version of the same algorithm) is marked as its companion: left out of a kit that
+# punches that exercise, its stub saying why, and never graded:
+#     // BEGIN KIT-HIDDEN WITH 5.2 the production BVH walk (use --accel bvh)
+#     ...
+#     // END KIT-HIDDEN WITH 5.2
+HIDDEN_BEGIN = re.compile(r"^(\s*)// BEGIN KIT-HIDDEN WITH (\d+)\.(\d+) (.+?)\s*$")
+HIDDEN_END = re.compile(r"^\s*// END KIT-HIDDEN WITH (\d+)\.(\d+)\s*$")
 SOURCE_SUFFIXES = {".cpp", ".hpp", ".h", ".cc"}
 
 
@@ -34,49 +42,73 @@ class Region:
     def id(self):
         return f"{self.lab}.{self.number}"
 
+    companion: bool = False  # KIT-HIDDEN WITH this exercise, not an exercise itself
+
     def stub(self):
+        if self.companion:
+            return f'{self.indent}throw gi::NotImplemented("{self.title}, left out of the kit with exercise {self.id},");\n'
         return f'{self.indent}throw gi::NotImplemented("exercise {self.id} {self.title}");\n'
 
 
-def regions_in(text, path):
-    """The regions of one file's text, checked for pairing."""
+def regions_in(text, path, companions=False):
+    """The exercise regions of one file's text (with companions=True: the KIT-HIDDEN
+    ones instead), checked for pairing."""
+    begin_re, end_re, word, noun = ((HIDDEN_BEGIN, HIDDEN_END, "KIT-HIDDEN WITH", "hidden code of")
+                                    if companions else (BEGIN, END, "EXERCISE", "exercise"))
     found, open_region = [], None
     for i, line in enumerate(text.splitlines()):
-        begin, end = BEGIN.match(line), END.match(line)
+        begin, end = begin_re.match(line), end_re.match(line)
         if begin:
             if open_region:
-                raise RegionError(f"{path}:{i + 1}: BEGIN EXERCISE inside exercise {open_region.id}")
+                raise RegionError(f"{path}:{i + 1}: BEGIN {word} inside {noun} {open_region.id}")
             indent, lab, number, title = begin.groups()
-            open_region = Region(path, i, -1, int(lab), int(number), title, indent)
+            open_region = Region(path, i, -1, int(lab), int(number), title, indent, companions)
         elif end:
             ident = f"{int(end.group(1))}.{int(end.group(2))}"
             if not open_region:
-                raise RegionError(f"{path}:{i + 1}: END EXERCISE {ident} without a BEGIN")
+                raise RegionError(f"{path}:{i + 1}: END {word} {ident} without a BEGIN")
             if ident != open_region.id:
-                raise RegionError(f"{path}:{i + 1}: END EXERCISE {ident} closes exercise {open_region.id}")
+                raise RegionError(f"{path}:{i + 1}: END {word} {ident} closes {noun} {open_region.id}")
             open_region.end = i
             found.append(open_region)
             open_region = None
     if open_region:
-        raise RegionError(f"{path}:{open_region.begin + 1}: exercise {open_region.id} has no END EXERCISE line")
+        raise RegionError(f"{path}:{open_region.begin + 1}: {noun} {open_region.id} has no END {word} line")
     if found and '#include "gi/core/not_implemented.hpp"' not in text:
-        raise RegionError(f'{path}: holds exercises but does not #include "gi/core/not_implemented.hpp"')
+        raise RegionError(f'{path}: holds {noun} regions but does not #include "gi/core/not_implemented.hpp"')
     return found
+
+
+def source_files(root):
+    root = Path(root)
+    return [f for f in sorted((root / "lib").rglob("*")) if f.suffix in SOURCE_SUFFIXES and f.is_file()]
 
 
 def find_regions(root):
     """Every exercise region under root/lib, sorted by id; ids must be unique."""
     root = Path(root)
     result = []
-    for file in sorted((root / "lib").rglob("*")):
-        if file.suffix in SOURCE_SUFFIXES and file.is_file():
-            result += regions_in(file.read_text(), file.relative_to(root))
+    for file in source_files(root):
+        result += regions_in(file.read_text(), file.relative_to(root))
     seen = {}
     for region in result:
         if region.id in seen:
             raise RegionError(f"{region.path}:{region.begin + 1}: exercise {region.id} also marked in {seen[region.id]}")
         seen[region.id] = region.path
     return sorted(result, key=lambda r: (r.lab, r.number))
+
+
+def find_companions(root, exercises):
+    """Every KIT-HIDDEN region under root/lib; each must name one of `exercises`."""
+    root = Path(root)
+    ids = {r.id for r in exercises}
+    result = []
+    for file in source_files(root):
+        for region in regions_in(file.read_text(), file.relative_to(root), companions=True):
+            if region.id not in ids:
+                raise RegionError(f"{region.path}:{region.begin + 1}: KIT-HIDDEN WITH {region.id}: no such exercise")
+            result.append(region)
+    return result
 
 
 def body(root, region):

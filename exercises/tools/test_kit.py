@@ -147,6 +147,28 @@ class Contents(unittest.TestCase):
                 kit.make_kit(root, Path(tmp) / "kit", "all")
             self.assertEqual(list(Path(tmp).iterdir()), [], "no kit, and no partial kit, is left")
 
+    def test_code_hidden_with_an_exercise_leaves_with_it(self):
+        root = small_tree()
+        (root / "lib" / "fast.cpp").write_text(
+            '#include "gi/core/not_implemented.hpp"\n'
+            "double quickly(double x) {\n"
+            "  // BEGIN KIT-HIDDEN WITH 3.1 the fast doubling\n"
+            "  const double shifted_twice = 2.0 * x;\n"
+            "  return shifted_twice;\n"
+            "  // END KIT-HIDDEN WITH 3.1\n"
+            "}\n")
+        with tempfile.TemporaryDirectory() as tmp:
+            kit.make_kit(root, Path(tmp) / "kit", "3")
+            text = (Path(tmp) / "kit" / "lib" / "fast.cpp").read_text()
+            self.assertNotIn("shifted_twice", text)
+            self.assertIn('throw gi::NotImplemented("the fast doubling, left out of the kit with exercise 3.1,");', text)
+            self.assertEqual((Path(tmp) / "kit" / "exercises" / "KIT").read_text(), "3.1 doubling\n",
+                             "hidden code is no exercise of its own")
+        (root / "lib" / "fast.cpp").write_text((root / "lib" / "fast.cpp").read_text().replace("3.1", "3.2"))
+        with tempfile.TemporaryDirectory() as tmp:
+            with self.assertRaisesRegex(regions.RegionError, r"lib/fast.cpp:3: KIT-HIDDEN WITH 3.2: no such exercise"):
+                kit.make_kit(root, Path(tmp) / "kit", "all")
+
     def test_lab_lists(self):
         self.assertEqual(regions.parse_labs("all", {1, 2}), {1, 2})
         self.assertEqual(regions.parse_labs(None, {1, 2}), {1, 2})

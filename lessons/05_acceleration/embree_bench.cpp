@@ -94,6 +94,22 @@ double time_ms(int repeats, const std::function<void()>& run) {
   return gi::median(ms);
 }
 
+// Ours and Embree's runs alternated, A B A B ..., so that a busy moment of a shared
+// machine falls on both: the medians of each, and the median of the pairs' ratios
+// (ours/Embree as a ratio of speeds: Embree's time over ours).
+struct Paired {
+  double ours_ms, embree_ms, ratio;
+};
+Paired alternate(int repeats, const std::function<void()>& ours, const std::function<void()>& embree) {
+  std::vector<double> a, b, ratio;
+  for (int i = 0; i < repeats; ++i) {
+    a.push_back(time_ms(1, ours));
+    b.push_back(time_ms(1, embree));
+    ratio.push_back(b.back() / a.back());
+  }
+  return {gi::median(a), gi::median(b), gi::median(ratio)};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -103,6 +119,8 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     bool robust = false;
     std::string out = "out/05_embree_bench";
+    std::string accel = "bvh-fast";
+    gi::BvhSettings tree;
     gi::Options options("05_embree_bench", "Our BVH against Intel Embree 3 on quad_room, one thread.");
     options.add("--quads", quads, "about how many quads the room is made of", 50, 10'000'000)
         .add("--width", width, "camera rays: image width", 1, 8192)
@@ -112,18 +130,23 @@ int main(int argc, char** argv) {
         .add("--repeats", repeats, "timed runs of each query; the median is shown", 1, 100)
         .add("--seed", seed, "seed of the random rays")
         .add_flag("--robust", robust, "build Embree's scene with RTC_SCENE_FLAG_ROBUST (watertight, slower)")
+        .add("--accel", accel, "our walk of the tree: the lab's (bvh) or the production one (bvh-fast)",
+             {"bvh", "bvh-fast"})
+        .add("--leaf-size", tree.max_leaf_size, "most primitives in a leaf of our tree", 1, 255)
+        .add("--bins", tree.bins, "SAH bins of our tree's builder", 2, 256)
         .add("--out", out, "folder for the tables (CSV)");
     if (!options.parse(argc, argv)) return 0;
 
     const gi::Scene scene = gi::quad_room(quads);
     gi::World world;
-    const double our_build = time_ms(repeats, [&] { world = gi::make_world(scene); });
+    const double our_build = time_ms(repeats, [&] { world = gi::make_world(scene, gi::acceleration_from_name(accel), tree); });
     Embree embree;
     const double embree_build = time_ms(repeats, [&] { make_embree_scene(embree, scene, robust); });
     gi::Table builds("Builds of " + scene.name + ": " + std::to_string(scene.quads.size()) + " quads, one thread",
                      {{"structure"}, {"primitives"}, {"build ms", 1}});
-    builds.add_row({"ours: BVH, binned SAH", static_cast<long long>(scene.quads.size()), our_build});
-    builds.add_row({std::string("Embree 3: BVH, medium quality") + (robust ? ", robust" : ""),
+    builds.add_row({"ours: BVH, binned SAH" + std::string(accel == "bvh-fast" ? ", made 4-wide" : ""),
+                    static_cast<long long>(scene.quads.size()), our_build});
+    builds.add_row({std::string("Embree ") + RTC_VERSION_STRING + ": BVH, medium quality" + (robust ? ", robust" : ""),
                     static_cast<long long>(2 * scene.quads.size()), embree_build});
 
     // The rays: one per pixel from the camera, and from random points in the room
@@ -132,7 +155,8 @@ int main(int argc, char** argv) {
     const std::vector<gi::Ray> camera = gi::camera_rays(scene, width, height);
     const std::vector<gi::Ray> random = gi::random_rays(gi::quad_room_interior(), random_rays, rng);
 
-    gi::Table queries("Queries, one thread, median of " + std::to_string(repeats) + " runs",
+    gi::Table queries("Queries, one thread, ours (" + accel + ") and Embree " + RTC_VERSION_STRING +
+                          " alternated, medians of " + std::to_string(repeats) + " runs; ours/Embree: median of the pairs",
                       {{"rays"}, {"query"}, {"count"}, {"ours ms", 1}, {"ours Mrays/s", 2}, {"Embree ms", 1},
                        {"Embree Mrays/s", 2}, {"ours/Embree", 2}, {"agree %", 3}});
     RTCIntersectContext context;
@@ -140,53 +164,57 @@ int main(int argc, char** argv) {
     for (const auto& [label, rays] : {std::pair{"camera", &camera}, std::pair{"random", &random}}) {
       const std::size_t n = rays->size();
       std::vector<double> our_t(n), embree_t(n);  // +inf for a miss
-      const double ours = time_ms(repeats, [&] {
-        for (std::size_t i = 0; i < n; ++i) {
-          const auto hit = gi::closest_hit(world, (*rays)[i]);
-          our_t[i] = hit ? hit->t : std::numeric_limits<double>::infinity();
-        }
-      });
-      const double theirs = time_ms(repeats, [&] {
-        for (std::size_t i = 0; i < n; ++i) {
-          RTCRayHit rayhit{};
-          rayhit.ray = embree_ray((*rays)[i]);
-          rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-          rtcIntersect1(embree.scene, &context, &rayhit);
-          embree_t[i] = rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<double>::infinity()
-                                                                      : static_cast<double>(rayhit.ray.tfar);
-        }
-      });
+      const Paired closest = alternate(
+          repeats,
+          [&] {
+            for (std::size_t i = 0; i < n; ++i) {
+              const auto hit = gi::closest_hit(world, (*rays)[i]);
+              our_t[i] = hit ? hit->t : std::numeric_limits<double>::infinity();
+            }
+          },
+          [&] {
+            for (std::size_t i = 0; i < n; ++i) {
+              RTCRayHit rayhit{};
+              rayhit.ray = embree_ray((*rays)[i]);
+              rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+              rtcIntersect1(embree.scene, &context, &rayhit);
+              embree_t[i] = rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<double>::infinity()
+                                                                          : static_cast<double>(rayhit.ray.tfar);
+            }
+          });
       // Agreement: the same hit or miss, and t within 1e-4 relative -- or 1e-5 absolute,
       // as rounding a ray's origin to float alone moves it by up to 3e-7 in this room.
       std::size_t agree = 0;
       for (std::size_t i = 0; i < n; ++i)
         agree += std::isinf(our_t[i]) ? std::isinf(embree_t[i])
                                       : std::abs(our_t[i] - embree_t[i]) <= 1e-4 * our_t[i] + 1e-5;
-      queries.add_row({label, "closest hit", static_cast<long long>(n), ours, 1e-3 * n / ours, theirs,
-                       1e-3 * n / theirs, theirs / ours, 100.0 * agree / n});
+      queries.add_row({label, "closest hit", static_cast<long long>(n), closest.ours_ms, 1e-3 * n / closest.ours_ms,
+                       closest.embree_ms, 1e-3 * n / closest.embree_ms, closest.ratio, 100.0 * agree / n});
 
       // The same rays cut to `segment`, as shadow rays: blocked or not?
       std::vector<char> our_blocked(n), embree_blocked(n);
-      const double ours_any = time_ms(repeats, [&] {
-        for (std::size_t i = 0; i < n; ++i) {
-          gi::Ray ray = (*rays)[i];
-          ray.t_max = segment;
-          our_blocked[i] = gi::any_hit(world, ray);
-        }
-      });
-      const double theirs_any = time_ms(repeats, [&] {
-        for (std::size_t i = 0; i < n; ++i) {
-          gi::Ray ray = (*rays)[i];
-          ray.t_max = segment;
-          RTCRay r = embree_ray(ray);
-          rtcOccluded1(embree.scene, &context, &r);
-          embree_blocked[i] = r.tfar == -inf;  // Embree's mark of an occluded ray
-        }
-      });
+      const Paired any = alternate(
+          repeats,
+          [&] {
+            for (std::size_t i = 0; i < n; ++i) {
+              gi::Ray ray = (*rays)[i];
+              ray.t_max = segment;
+              our_blocked[i] = gi::any_hit(world, ray);
+            }
+          },
+          [&] {
+            for (std::size_t i = 0; i < n; ++i) {
+              gi::Ray ray = (*rays)[i];
+              ray.t_max = segment;
+              RTCRay r = embree_ray(ray);
+              rtcOccluded1(embree.scene, &context, &r);
+              embree_blocked[i] = r.tfar == -inf;  // Embree's mark of an occluded ray
+            }
+          });
       agree = 0;
       for (std::size_t i = 0; i < n; ++i) agree += our_blocked[i] == embree_blocked[i];
-      queries.add_row({label, "any hit", static_cast<long long>(n), ours_any, 1e-3 * n / ours_any, theirs_any,
-                       1e-3 * n / theirs_any, theirs_any / ours_any, 100.0 * agree / n});
+      queries.add_row({label, "any hit", static_cast<long long>(n), any.ours_ms, 1e-3 * n / any.ours_ms, any.embree_ms,
+                       1e-3 * n / any.embree_ms, any.ratio, 100.0 * agree / n});
     }
     builds.print();
     std::cout << '\n';

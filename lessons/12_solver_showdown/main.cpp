@@ -7,8 +7,10 @@
 #include <stdexcept>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "gi/core/parallel.hpp"
 #include "gi/core/rng.hpp"
 #include "gi/core/timer.hpp"
 #include "gi/pathtrace/path_scene.hpp"
@@ -112,35 +114,52 @@ void showdown(const Box& box, gi::Lesson& lesson) {
 // the channels), not assumed: it equals the reflectance only in a room that is truly
 // closed, like the empty box; the Cornell box's "closed" front leaves floor elements
 // under the blocks that see nothing and absorb all they get.
-void stability(const Box& closed, const Box& open, const Box& empty, gi::Lesson& lesson) {
-  gi::Table table("Stability: iterations to ||r|| < 1e-6 (at most 20 000), or the failure detected",
-                  {{"case"}, {"rho(RF)", 4}, {"ln(1e-6)/ln rho", 0}, {"Jacobi"}, {"Jacobi steps"}, {"Gauss-Seidel"},
-                   {"G-S steps"}});
-  const auto run = [&](const std::string& name, const gi::RadiositySystem& s) {
-    double radius = 0;
-    for (int channel = 0; channel < 3; ++channel) radius = std::max(radius, gi::spectral_radius(s, channel).value());
-    gi::SolverOptions options;
-    options.tolerance = 1e-6;
-    options.max_steps = 20000;
-    const gi::SolverResult j = gi::solve_jacobi(s, options), g = gi::solve_gauss_seidel(s, options);
-    const gi::Cell predicted = radius < 1 ? gi::Cell(std::log(1e-6) / std::log(radius)) : gi::Cell("-");
-    table.add_row({name, radius, predicted, gi::status_name(j.status), j.history.back().step,
-                   gi::status_name(g.status), g.history.back().step});
-  };
+void stability(const Box& closed, const Box& open, const Box& empty, int threads, gi::Lesson& lesson) {
   const auto with_rho = [](gi::RadiositySystem s, double rho) {
     for (gi::Color& r : s.rho) r = gi::Color(rho);
     return s;
   };
-  run("Cornell reflectances, closed", closed.system);
-  run("Cornell reflectances, open front", open.system);
+  std::vector<std::pair<std::string, gi::RadiositySystem>> cases = {{"Cornell reflectances, closed", closed.system},
+                                                                    {"Cornell reflectances, open front", open.system}};
   for (double rho : {0.9, 0.99, 0.999})
-    run("empty closed box, all rho = " + gi::format_number(rho, 3, gi::Format::Fixed), with_rho(empty.system, rho));
-  run("Cornell closed, all rho = 0.999", with_rho(closed.system, 0.999));
-  run("Cornell open front, all rho = 0.99", with_rho(open.system, 0.99));
-  run("all rho = 1.05 (unphysical)", with_rho(closed.system, 1.05));
+    cases.emplace_back("empty closed box, all rho = " + gi::format_number(rho, 3, gi::Format::Fixed),
+                       with_rho(empty.system, rho));
+  cases.emplace_back("Cornell closed, all rho = 0.999", with_rho(closed.system, 0.999));
+  cases.emplace_back("Cornell open front, all rho = 0.99", with_rho(open.system, 0.99));
+  cases.emplace_back("all rho = 1.05 (unphysical)", with_rho(closed.system, 1.05));
   gi::RadiositySystem rows = with_rho(closed.system, 0.95);
   for (double& f : rows.F.values) f *= 1.1;  // rows summing to 1.1: energy from nowhere
-  run("rho = 0.95, F rows sum to 1.1", rows);
+  cases.emplace_back("rho = 0.95, F rows sum to 1.1", std::move(rows));
+
+  // Each case's spectral radius, Jacobi and Gauss-Seidel are independent of one
+  // another: three tasks per case, shared among the threads (the slow cases near
+  // rho = 1 take seconds each), each writing only its own slot.
+  const int n = static_cast<int>(cases.size());
+  std::vector<double> radius(n);
+  std::vector<gi::SolverResult> jacobi(n), gauss_seidel(n);
+  gi::SolverOptions options;
+  options.tolerance = 1e-6;
+  options.max_steps = 20000;
+  gi::parallel_for(3 * n, threads, [&](int task) {
+    const gi::RadiositySystem& s = cases[task / 3].second;
+    if (task % 3 == 0) {
+      for (int channel = 0; channel < 3; ++channel)
+        radius[task / 3] = std::max(radius[task / 3], gi::spectral_radius(s, channel).value());
+    } else if (task % 3 == 1) {
+      jacobi[task / 3] = gi::solve_jacobi(s, options);
+    } else {
+      gauss_seidel[task / 3] = gi::solve_gauss_seidel(s, options);
+    }
+  });
+  gi::Table table("Stability: iterations to ||r|| < 1e-6 (at most 20 000), or the failure detected",
+                  {{"case"}, {"rho(RF)", 4}, {"ln(1e-6)/ln rho", 0}, {"Jacobi"}, {"Jacobi steps"}, {"Gauss-Seidel"},
+                   {"G-S steps"}});
+  for (int c = 0; c < n; ++c) {
+    const gi::Cell predicted = radius[c] < 1 ? gi::Cell(std::log(1e-6) / std::log(radius[c])) : gi::Cell("-");
+    table.add_row({cases[c].first, radius[c], predicted, gi::status_name(jacobi[c].status),
+                   jacobi[c].history.back().step, gi::status_name(gauss_seidel[c].status),
+                   gauss_seidel[c].history.back().step});
+  }
   lesson.table(table, "stability");
 }
 
@@ -180,7 +199,12 @@ struct Method {
   bool direct_per_pixel = false;  // the direct light drawn per pixel, the mesh showing the rest (direct_display.hpp)
 };
 
-std::vector<Method> methods(bool quick) {
+// How much of the study to run: the meshes of up to 500 elements (Small); the rows
+// that make the lesson's point in a few seconds (Lesson: a mesh refined, the direct
+// light made exact, then drawn per pixel, each on two meshes); or every row of docs/12's table (Full).
+enum class Study { Small, Lesson, Full };
+
+std::vector<Method> methods(Study study) {
   gi::Recipe shipped;  // lessons 08-11: the hemicube at resolution 100 carries all the light
   shipped.exact_direct = false;
   gi::Recipe sized = shipped, exact, monte_carlo, shooting, differential = shipped;
@@ -192,31 +216,36 @@ std::vector<Method> methods(bool quick) {
   shooting.elements_per_side = 3;  // shoot from patches, receive at 3 x 3 elements each
   differential.form_factors.method = gi::FormFactorMethod::Differential;
   std::vector<Method> list;
-  const auto add = [&](const std::string& family, std::vector<int> sizes, const gi::Recipe& recipe,
-                       bool per_pixel = false) {
-    for (int n : sizes)
-      if (!quick || n <= 500) list.push_back({family, n, recipe, per_pixel});
+  // `sizes`: the full study's meshes; `by_default`: those of them the default run shows.
+  const auto add = [&](const std::string& family, std::vector<int> sizes, std::vector<int> by_default,
+                       const gi::Recipe& recipe, bool per_pixel = false) {
+    for (int n : sizes) {
+      const bool shown = study == Study::Full    ? true
+                         : study == Study::Small ? n <= 500
+                                                 : std::find(by_default.begin(), by_default.end(), n) != by_default.end();
+      if (shown) list.push_back({family, n, recipe, per_pixel});
+    }
   };
-  add("hemicube 100, all light", {250, 500, 1000, 2000}, shipped);
-  add("hemicube sized to the mesh, all light", {4000}, sized);
-  add("differential, all light", {250, 1000}, differential);
-  add("exact direct + hemicube, Gauss-Seidel", {250, 500, 1000, 2000, 4000}, exact);
-  add("exact direct + Monte Carlo 256 rays, Gauss-Seidel", {500, 2000}, monte_carlo);
-  add("exact direct + hemicube, progressive 3x3", {1000, 4000, 9000}, shooting);
+  add("hemicube 100, all light", {250, 500, 1000, 2000}, {250, 500}, shipped);
+  add("hemicube sized to the mesh, all light", {4000}, {}, sized);
+  add("differential, all light", {250, 1000}, {}, differential);
+  add("exact direct + hemicube, Gauss-Seidel", {250, 500, 1000, 2000, 4000}, {}, exact);
+  add("exact direct + Monte Carlo 256 rays, Gauss-Seidel", {500, 2000}, {500, 2000}, monte_carlo);
+  add("exact direct + hemicube, progressive 3x3", {1000, 4000, 9000}, {1000}, shooting);
   // Per pixel, 4 x 4 light cells: a pixel's shadow is averaged over its 2 x 2 eye rays anyway.
   gi::Recipe per_pixel = exact, per_pixel_mc = monte_carlo;
   per_pixel.direct.light_cells = per_pixel_mc.direct.light_cells = 4;
-  add("direct per pixel + hemicube, Gauss-Seidel", {250, 500, 1000, 2000}, per_pixel, true);
-  add("direct per pixel + Monte Carlo 256 rays, Gauss-Seidel", {500, 2000}, per_pixel_mc, true);
+  add("direct per pixel + hemicube, Gauss-Seidel", {250, 500, 1000, 2000}, {}, per_pixel, true);
+  add("direct per pixel + Monte Carlo 256 rays, Gauss-Seidel", {500, 2000}, {500, 2000}, per_pixel_mc, true);
   for (gi::RecipeSolver solver : {gi::RecipeSolver::Jacobi, gi::RecipeSolver::Southwell, gi::RecipeSolver::Direct}) {
     gi::Recipe other = exact;
     other.solver = solver;
-    add("exact direct + hemicube, other solvers", {1000}, other);
+    add("exact direct + hemicube, other solvers", {1000}, {}, other);
   }
   return list;
 }
 
-void against_truth(bool quick, int threads, std::uint64_t seed, gi::Lesson& lesson) {
+void against_truth(Study study, int threads, std::uint64_t seed, gi::Lesson& lesson) {
   const gi::RadiosityScene scene = gi::cornell_box();
   const int size = 256;
   const gi::PathScene path_scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
@@ -238,13 +267,14 @@ void against_truth(bool quick, int threads, std::uint64_t seed, gi::Lesson& less
                       "noise is " + gi::format_number(100 * noise.relative_rms, 2, gi::Format::Fixed) + "% / " +
                       gi::format_number(100 * noise.block_relative, 2, gi::Format::Fixed) + "%), " +
                       std::to_string(mask.count()) + " interior 8x8 blocks of 256x256, smooth shading",
-                  {{"method"}, {"elements"}, {"ff"}, {"form factors s", 2}, {"direct s", 2}, {"solve s", 2},
-                   {"total s", 2}, {"relative RMS %", 2}, {"block relative %", 2}});
+                  {{"method"}, {"elements"}, {"ff"}, {"form factors s", 2, gi::Format::Fixed}, {"direct s", 2, gi::Format::Fixed},
+                   {"solve s", 2, gi::Format::Fixed},
+                   {"total s", 2, gi::Format::Fixed}, {"relative RMS %", 2}, {"block relative %", 2}});
   std::vector<gi::Series> curves;
   gi::Image best;
   double best_error = 1e300;
   std::vector<std::string> warnings;
-  for (Method m : methods(quick)) {
+  for (Method m : methods(study)) {
     m.recipe.elements = m.elements;
     m.recipe.threads = m.recipe.direct.threads = threads;
     const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, m.recipe);
@@ -321,23 +351,31 @@ void bandwidth(int n, gi::Lesson& lesson) {
 int main(int argc, char** argv) {
   gi::Lesson lesson("12_solver_showdown", "All radiosity solvers on one Cornell box; where they crawl or fail; "
                                           "float against double; mesh resolution; a sweep against memory speed.");
-  int elements = 400, bandwidth_n = 10000;
-  bool skip_mesh = false, quick_truth = false;
+  int elements = 400, bandwidth_n = 6000;
+  bool skip_mesh = false, quick_truth = false, full_truth = false;
   lesson.options()
       .add("--elements", elements, "about how many elements for the showdown and stability tables", 20, 3000)
-      .add("--bandwidth-n", bandwidth_n, "size n of the n x n float matrix of the sweep benchmark", 100, 20000)
+      .add("--bandwidth-n", bandwidth_n, "size n of the n x n float matrix of the sweep benchmark (6 000: 144 MB, far past the caches)", 100,
+           20000)
       .add_flag("--skip-mesh-study", skip_mesh, "leave out the comparison with the path-traced truth (the slowest part)")
-      .add_flag("--quick-mesh-study", quick_truth, "compare only the meshes of up to 500 elements with the truth");
+      .add_flag("--quick-mesh-study", quick_truth, "compare only the meshes of up to 500 elements with the truth")
+      .add_flag("--full", full_truth, "compare every mesh of docs/12's table with the truth, up to 9 000 elements "
+                                      "(under a minute; the default shows seven of its rows)");
+  lesson.add_check([&] {
+    if (int(skip_mesh) + int(quick_truth) + int(full_truth) > 1)
+      throw gi::OptionError("--skip-mesh-study, --quick-mesh-study and --full choose how much to compare with the "
+                            "truth: give at most one");
+  });
   return lesson.run(argc, argv, [&] {
     const Box open = cornell(elements, false, lesson.threads()), closed = cornell(elements, true, lesson.threads());
     showdown(open, lesson);
     std::cout << '\n';
-    stability(closed, open, meshed(gi::closed_box(1.0), 150, lesson.threads()), lesson);
+    stability(closed, open, meshed(gi::closed_box(1.0), 150, lesson.threads()), lesson.threads(), lesson);
     std::cout << '\n';
     precision(closed, lesson);
     if (!skip_mesh) {
       std::cout << '\n';
-      against_truth(quick_truth, lesson.threads(), lesson.seed(), lesson);
+      against_truth(full_truth ? Study::Full : quick_truth ? Study::Small : Study::Lesson, lesson.threads(), lesson.seed(), lesson);
     }
     std::cout << '\n';
     bandwidth(bandwidth_n, lesson);

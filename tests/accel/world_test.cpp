@@ -16,7 +16,8 @@ using gi::vec3;
 
 namespace {
 
-const Acceleration all[] = {Acceleration::BruteForce, Acceleration::BoundingBoxes, Acceleration::Bvh};
+const Acceleration all[] = {Acceleration::BruteForce, Acceleration::BoundingBoxes, Acceleration::Bvh,
+                            Acceleration::FastBvh};
 
 vec3 random_direction(gi::Rng& rng) {
   const double z = 2 * rng.uniform() - 1, phi = 2 * gi::pi * rng.uniform(), s = std::sqrt(1 - z * z);
@@ -45,13 +46,15 @@ void expect_agreement(const gi::Scene& scene, const std::vector<Ray>& rays) {
   const gi::World boxes = gi::make_world(scene, Acceleration::BoundingBoxes);
   const gi::World bvh = gi::make_world(scene, Acceleration::Bvh);
   const gi::World bvh_median = gi::make_world(scene, Acceleration::Bvh, {1, 12, gi::Split::Median});
+  const gi::World fast = gi::make_world(scene, Acceleration::FastBvh);
+  const gi::World fast_median = gi::make_world(scene, Acceleration::FastBvh, {1, 12, gi::Split::Median});
   int hits = 0;
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const auto expected = gi::closest_hit(brute, rays[i]);
     const bool expected_any = gi::any_hit(brute, rays[i]);
     ASSERT_EQ(expected_any, expected.has_value()) << "ray " << i;
     hits += expected.has_value();
-    for (const gi::World* world : {&boxes, &bvh, &bvh_median}) {
+    for (const gi::World* world : {&boxes, &bvh, &bvh_median, &fast, &fast_median}) {
       const auto hit = gi::closest_hit(*world, rays[i]);
       ASSERT_EQ(hit.has_value(), expected.has_value()) << gi::name(world->acceleration) << ", ray " << i;
       EXPECT_EQ(gi::any_hit(*world, rays[i]), expected_any) << gi::name(world->acceleration) << ", ray " << i;
@@ -83,7 +86,7 @@ TEST(World, BruteForceFindsTheNearestOfAllPrimitiveKinds) {
 
 TEST(World, NamesRoundTripAndUnknownNamesListTheKnownOnes) {
   for (const Acceleration a : all) EXPECT_EQ(gi::acceleration_from_name(gi::name(a)), a);
-  EXPECT_EQ(gi::acceleration_names(), (std::vector<std::string>{"brute-force", "bounding-boxes", "bvh"}));
+  EXPECT_EQ(gi::acceleration_names(), (std::vector<std::string>{"brute-force", "bounding-boxes", "bvh", "bvh-fast"}));
   try {
     gi::acceleration_from_name("kd-tree");
     FAIL() << "expected an exception";

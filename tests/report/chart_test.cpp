@@ -44,3 +44,27 @@ TEST(Chart, EmptyChartIsStillValid) {
   const std::string svg = gi::to_svg(gi::Chart{"empty", "x", "y", true, true, {}});
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
 }
+
+// The legend right of the plot is not cut off: a long name widens the picture (at
+// about 7 px a character), a short one leaves the width asked for.
+TEST(Chart, ALongLegendNameWidensThePicture) {
+  gi::Chart chart{"t", "x", "y", false, false, {}};
+  chart.series.push_back({"short", {1, 2}, {1, 2}});
+  EXPECT_NE(gi::to_svg(chart, 720, 480).find("width=\"720\""), std::string::npos);
+  const std::string name(60, 'm');
+  chart.series.push_back({name, {1, 2}, {2, 3}});
+  const std::string svg = gi::to_svg(chart, 720, 480);
+  const std::size_t at = svg.find("width=\"") + 7;
+  const int width = std::stoi(svg.substr(at));
+  EXPECT_GE(width, 720 - 200 + 46 + 7 * 60) << "the legend's text starts 46 px right of the plot";
+}
+
+// A title longer than the plot is wide starts inside the picture: its centre is at
+// least half its estimated length (8 px a character at font size 15) from the left.
+TEST(Chart, ALongTitleStaysInsideThePicture) {
+  const std::string title(100, 'T');
+  const std::string svg = gi::to_svg(gi::Chart{title, "x", "y", false, false, {}}, 720, 480);
+  const std::size_t at = svg.find("<text x=\"") + 9;
+  EXPECT_GE(std::stod(svg.substr(at)), 4.0 * 100);
+  EXPECT_GE(std::stoi(svg.substr(svg.find("width=\"") + 7)), 8 * 100);
+}

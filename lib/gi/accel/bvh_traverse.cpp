@@ -4,23 +4,6 @@
 
 namespace gi {
 
-namespace {
-
-// The ray against the primitive a tree reference names; the hit says which one.
-std::optional<Hit> intersect(const Ray& ray, const Scene& scene, PrimitiveRef ref) {
-  const auto i = static_cast<std::size_t>(ref.index);
-  std::optional<Hit> hit;
-  switch (ref.kind) {
-    case PrimitiveKind::Sphere: hit = intersect(ray, scene.spheres[i]); break;
-    case PrimitiveKind::Quad: hit = intersect(ray, scene.quads[i]); break;
-    case PrimitiveKind::Triangle: hit = intersect(ray, scene.triangles[i]); break;
-  }
-  if (hit) hit->object = ref.index;
-  return hit;
-}
-
-}  // namespace
-
 // Front to back: of two children whose boxes the ray enters, go on with the one it
 // enters first and put the other on a stack, with the distance t_enter at which the
 // ray enters it. Every hit shortens the ray (ray.t_max = t), so later primitives

@@ -6,6 +6,19 @@
 
 namespace gi {
 
+// The ray against the primitive a tree reference names; the hit says which one.
+inline std::optional<Hit> intersect(const Ray& ray, const Scene& scene, PrimitiveRef ref) {
+  const auto i = static_cast<std::size_t>(ref.index);
+  std::optional<Hit> hit;
+  switch (ref.kind) {
+    case PrimitiveKind::Sphere: hit = intersect(ray, scene.spheres[i]); break;
+    case PrimitiveKind::Quad: hit = intersect(ray, scene.quads[i]); break;
+    case PrimitiveKind::Triangle: hit = intersect(ray, scene.triangles[i]); break;
+  }
+  if (hit) hit->object = ref.index;
+  return hit;
+}
+
 // Ray queries against a tree built over `scene` (its spheres and quads; the World
 // adds the planes). Both add to `counts`: a node visited is one whose children's
 // boxes or whose primitives are tested, a box test is one call of slab_test, a

@@ -70,23 +70,26 @@ std::string name(Acceleration acceleration) {
     case Acceleration::BruteForce: return "brute-force";
     case Acceleration::BoundingBoxes: return "bounding-boxes";
     case Acceleration::Bvh: return "bvh";
+    case Acceleration::FastBvh: return "bvh-fast";
   }
   throw std::invalid_argument("unknown acceleration");
 }
 
 std::vector<std::string> acceleration_names() {
-  return {name(Acceleration::BruteForce), name(Acceleration::BoundingBoxes), name(Acceleration::Bvh)};
+  return {name(Acceleration::BruteForce), name(Acceleration::BoundingBoxes), name(Acceleration::Bvh),
+          name(Acceleration::FastBvh)};
 }
 
 Acceleration acceleration_from_name(const std::string& text) {
-  for (Acceleration a : {Acceleration::BruteForce, Acceleration::BoundingBoxes, Acceleration::Bvh})
+  for (Acceleration a : {Acceleration::BruteForce, Acceleration::BoundingBoxes, Acceleration::Bvh, Acceleration::FastBvh})
     if (name(a) == text) return a;
-  throw std::invalid_argument("unknown acceleration '" + text + "' (known: brute-force, bounding-boxes, bvh)");
+  throw std::invalid_argument("unknown acceleration '" + text + "' (known: brute-force, bounding-boxes, bvh, bvh-fast)");
 }
 
 World make_world(Scene scene, Acceleration acceleration, const BvhSettings& settings) {
-  World world{std::move(scene), acceleration, {}, {}};
+  World world{std::move(scene), acceleration, {}, {}, {}};
   if (acceleration == Acceleration::Bvh) world.bvh = build_bvh(world.scene, settings);
+  if (acceleration == Acceleration::FastBvh) world.fast_bvh = make_fast_bvh(build_bvh(world.scene, settings));
   if (acceleration == Acceleration::BoundingBoxes) {
     world.boxes.reserve(world.scene.spheres.size() + world.scene.quads.size() + world.scene.triangles.size());
     for (const Sphere& sphere : world.scene.spheres) world.boxes.push_back(bounds(sphere));
@@ -121,6 +124,9 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
     case Acceleration::Bvh:
       nearest = closest_hit(world.bvh, scene, ray, local);  // leaves ray.t_max at its hit
       break;
+    case Acceleration::FastBvh:
+      nearest = closest_hit(world.fast_bvh, scene, ray);  // leaves ray.t_max at its hit
+      break;
   }
   closest_in(scene.planes, ray, nearest, local);
   if (counts) *counts += local;
@@ -145,6 +151,9 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
     }
     case Acceleration::Bvh:
       hit = any_hit(world.bvh, scene, ray, local);
+      break;
+    case Acceleration::FastBvh:
+      hit = any_hit(world.fast_bvh, scene, ray);
       break;
   }
   hit = hit || any_in(scene.planes, ray, local);

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "gi/accel/bvh.hpp"
+#include "gi/accel/bvh_fast.hpp"
 #include "gi/accel/traversal_counts.hpp"
 
 namespace gi {
@@ -14,10 +15,12 @@ namespace gi {
 //                  when its box is hit. Still N tests, but a box test is cheaper than
 //                  most objects' own
 //   Bvh            boxes around boxes (bvh.hpp): about log N tests per ray
-// All three find the same hits.
-enum class Acceleration { BruteForce, BoundingBoxes, Bvh };
+//   FastBvh        the same tree, walked by the production path (bvh_fast.hpp): float
+//                  slab tests, both children's boxes in one cache line
+// All four find the same hits.
+enum class Acceleration { BruteForce, BoundingBoxes, Bvh, FastBvh };
 
-std::string name(Acceleration acceleration);  // "brute-force", "bounding-boxes", "bvh"
+std::string name(Acceleration acceleration);  // "brute-force", "bounding-boxes", "bvh", "bvh-fast"
 std::vector<std::string> acceleration_names();
 // Throws std::invalid_argument, listing the names, when `name` is not one of them.
 Acceleration acceleration_from_name(const std::string& name);
@@ -28,6 +31,7 @@ struct World {
   Scene scene;
   Acceleration acceleration = Acceleration::Bvh;
   Bvh bvh;                  // Acceleration::Bvh only
+  FastBvh fast_bvh;         // Acceleration::FastBvh only
   std::vector<Aabb> boxes;  // Acceleration::BoundingBoxes only: the spheres' boxes, then the quads'
 };
 
@@ -37,7 +41,8 @@ World make_world(Scene scene, Acceleration acceleration = Acceleration::Bvh, con
 
 // The nearest hit with t in [ray.t_min, ray.t_max], or nothing: whatever the
 // acceleration, the hit brute force finds, up to which of two
-// surfaces at exactly the same t is reported. `counts`, when given, is added to.
+// surfaces at exactly the same t is reported. `counts`, when given, is added to
+// (FastBvh counts only the planes' tests: its walk counts nothing).
 std::optional<Hit> closest_hit(const World& world, Ray ray, TraversalCounts* counts = nullptr);
 
 // Shadow-ray query: is anything hit with t in [t_min, t_max]? Stops at the first hit.

@@ -96,11 +96,18 @@ std::vector<double> axis_ticks(double lo, double hi, bool log) {
 std::string to_svg(const Chart& chart, int width, int height) {
   const double left = 80, right = width - 200.0, top = 40, bottom = height - 60.0;
   const Axis ax = make_axis(chart, true), ay = make_axis(chart, false);
+  // The legend sits right of the plot; a long series name or title widens the picture
+  // rather than being cut off (about 7 px a character at font size 12, 8 at 15).
+  std::size_t longest = 0;
+  for (const Series& series : chart.series) longest = std::max(longest, series.name.size());
+  const int total_width = std::max({width, static_cast<int>(right + 46 + 7.0 * longest + 10),
+                                    static_cast<int>(8.0 * chart.title.size() + 20)});
   std::ostringstream os;
-  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << total_width << "\" height=\"" << height
      << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-     << "<text x=\"" << num((left + right) / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
+     << "<text x=\"" << num(std::max((left + right) / 2, 4.0 * chart.title.size() + 10))
+     << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
      << escape(chart.title) << "</text>\n";
   // Grid lines and tick labels.
   for (double t : axis_ticks(ax.lo, ax.hi, ax.log)) {

@@ -1,0 +1,50 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "gi/accel/bvh.hpp"
+
+namespace gi {
+
+// The production walk of a BVH, beside the lecture's (bvh_traverse.hpp, lab 5). It
+// finds the same hits on the same tree, faster, by three changes measured in lesson 05:
+//
+//   wide nodes    the binary tree collapsed into a 4-ary one: each node stands for up
+//                 to three of the binary tree's levels (its children are the binary
+//                 node's children and grandchildren, the larger ones opened first), so a
+//                 ray makes a third as many stops.
+//   node layout   a node holds its four children's boxes, axis by axis (128 bytes, two
+//                 cache lines), and whether each child is a node or a leaf: a visit reads
+//                 one node, not one per child.
+//   float slabs   the four slab tests at once, four floats wide, with the ray's origin and
+//                 1/d converted once per ray; widened (bvh_fast.cpp) so that it never
+//                 misses a box the double test hits.
+//
+// The primitives are still intersected in double by the same routines, so every hit
+// is the very hit the plain walk finds, to the bit.
+struct alignas(64) FastBvhNode {  // starts a cache line: a node spans two, never three
+  // Child c's box along axis a is [bounds[2a][c], bounds[2a + 1][c]]: rows lo.x, hi.x,
+  // lo.y, hi.y, lo.z, hi.z. An unused child has lo = +inf, hi = -inf: no ray enters it.
+  float bounds[6][4];
+  // count[c] == 0: child c is the node nodes[index[c]] (or unused);
+  // count[c] > 0:  child c is a leaf holding refs[index[c], index[c] + count[c]).
+  std::int32_t index[4];
+  std::int32_t count[4];
+};
+static_assert(sizeof(FastBvhNode) == 128, "two cache lines");
+
+struct FastBvh {
+  std::vector<FastBvhNode> nodes;  // nodes[0] is the root
+  std::vector<PrimitiveRef> refs;  // the plain tree's refs, in the same order
+};
+
+// Re-lays a built tree out for the fast walk (linear in its size).
+FastBvh make_fast_bvh(const Bvh& bvh);
+
+// As closest_hit(const Bvh&, ...) and any_hit(const Bvh&, ...) of bvh_traverse.hpp,
+// with no counts: the same hit or answer for every ray (a test holds them to it).
+std::optional<Hit> closest_hit(const FastBvh& bvh, const Scene& scene, Ray& ray);
+bool any_hit(const FastBvh& bvh, const Scene& scene, const Ray& ray);
+
+}  // namespace gi
