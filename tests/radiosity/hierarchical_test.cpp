@@ -374,3 +374,4 @@ TEST(Hierarchical, SeatedInTheRecipeGivesTheRunsSolution) {
   EXPECT_EQ(r.status, gi::SolveStatus::Converged);
   EXPECT_EQ(gi::describe(recipe), "exact direct + links indirect, hierarchical");
 }
+

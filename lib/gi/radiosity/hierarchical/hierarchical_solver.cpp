@@ -23,7 +23,7 @@ void iterate(Hierarchy& h, int threads) {
   const int blocks = static_cast<int>((h.nodes.size() + block - 1) / block);
   parallel_for(blocks, threads, [&](int b) {
     const std::size_t end = std::min(h.nodes.size(), static_cast<std::size_t>(b + 1) * block);
-    for (std::size_t n = static_cast<std::size_t>(b) * block; n < end; ++n) h.nodes[n].gathered = gather(h.nodes[n], B);
+    for (std::size_t n = static_cast<std::size_t>(b) * block; n < end; ++n) h.nodes[n].gathered = gather(h, h.nodes[n], B);
   });
   for (int root = 0; root < static_cast<int>(h.surfaces.size()); ++root) push_pull(h, root, Color(0.0));
 }

@@ -17,6 +17,7 @@ Hierarchy make_hierarchy(const std::vector<Surface>& surfaces) {
     root.surface = static_cast<int>(s);
     root.rho = surfaces[s].reflectance;
     root.E = root.B = surfaces[s].emission;
+    root.open_area = root.shape.area;
     h.nodes.push_back(root);
     h.total_area += root.shape.area;
     h.largest_emission = std::max(h.largest_emission, max_component(root.E));
@@ -45,9 +46,16 @@ void split(Hierarchy& h, int index) {
     const std::array<vec3, 4>& c = h.surfaces[child.surface].corners;
     const double s0 = child.i * scale, s1 = (child.i + 1) * scale, t0 = child.j * scale, t1 = (child.j + 1) * scale;
     child.shape = make_polygon({bilinear(c, s0, t0), bilinear(c, s1, t0), bilinear(c, s1, t1), bilinear(c, s0, t1)});
+    child.open_area = child.shape.area;
     h.nodes.push_back(std::move(child));  // may move the nodes: `parent` is looked up again each time
   }
   for (int k = 0; k < 4; ++k) h.nodes[index].children[k] = first + k;
+}
+
+vec3 lifted_point(const Hierarchy& h, const Node& node, double u, double v) {
+  const vec3 p = node_point(h, node, u, v);
+  const Polygon& surface = h.nodes[node.surface].shape;  // the root: the whole surface
+  return p + (lift(surface) - dot(p - surface.centre, surface.normal)) * surface.normal;
 }
 
 int leaf_containing(const Hierarchy& h, int surface, double s, double t) {

@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "gi/radiosity/hierarchical/link.hpp"
@@ -30,6 +31,11 @@ struct Node {
   // rho times what its own links bring in, before push-pull hands it to its leaves.
   Color gathered{0.0};
   std::vector<Link> links;  // the links it receives over
+  // Its open part, what is not buried inside a solid (exposure.hpp): a bit per cell of
+  // a 4 x 4 grid, and an area (a leaf's share of open cells times its area, above that
+  // the sum of its children's). Until measured: all of it.
+  std::uint16_t open = 0xFFFF;
+  double open_area = 0;
 
   bool leaf() const { return children[0] < 0; }
 };
@@ -39,6 +45,7 @@ struct Hierarchy {
   std::vector<Node> nodes;  // nodes[s] is the root of surface s
   double total_area = 0;    // of all surfaces
   double largest_emission = 0;  // max over surfaces and channels of E: the scale of BF-refinement
+  int exposed = 0;  // nodes [0, exposed) have their open cells judged (exposure.hpp)
 };
 
 // One root per surface, every B = E, no links. Throws std::invalid_argument for a bad
@@ -52,6 +59,11 @@ void split(Hierarchy& hierarchy, int node);
 
 // The point (u, v) in [0, 1]^2 of a node, on its surface's bilinear map.
 vec3 node_point(const Hierarchy& hierarchy, const Node& node, double u, double v);
+
+// The same point moved along its surface's normal onto the plane through the
+// surface's lifted centre (polygon.hpp; a no-op on a flat surface): where shadow rays
+// start, so that a twisted surface never hides its own points.
+vec3 lifted_point(const Hierarchy& hierarchy, const Node& node, double u, double v);
 
 // The leaf of surface `surface` that holds the point (s, t) of the surface's
 // parameter square (bilinear's), found by walking down from the root: at level l the

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 
 namespace gi {
 
@@ -12,12 +13,16 @@ struct Link {
   int receiver = -1, source = -1;  // node indices
   double F = 0;           // F_pq, receiver to source, with nothing in between (analytic, link_estimate.hpp)
   double F_back = 0;      // F_qp, source to receiver: the oracle's second estimate
-  double visibility = 0;  // V_pq in [0, 1]: the fraction of shadow rays between them that get through
+  double visibility = 0;  // V_pq in [0, 1]: the share of the light between them that gets through (visibility.hpp)
   // The least and the greatest point-to-polygon F from the receiver's sample points to
   // the source, nothing in between: how much F changes across the receiver, which a
   // link (one F for the whole receiver) cannot carry. The oracle's error estimate.
-  // Floats: an estimate, and a link stays at 40 bytes.
+  // Floats: estimates, and a link stays at 56 bytes.
   float F_min = 0, F_max = 0;
+  // V split by where the light lands: the share that gets through into each quarter
+  // of the source (its children's order; they add up to V). A source that is not a leaf
+  // sends each quarter's light by that quarter's own B (push_pull.hpp's gather).
+  std::array<float, 4> by_quarter{};
 };
 
 }  // namespace gi

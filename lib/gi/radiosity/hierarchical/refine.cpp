@@ -4,6 +4,7 @@
 #include <string>
 
 #include "gi/core/parallel.hpp"
+#include "gi/radiosity/hierarchical/exposure.hpp"
 #include "gi/radiosity/hierarchical/link_estimate.hpp"
 
 namespace gi {
@@ -68,6 +69,8 @@ void refine_pairs(Hierarchy& h, const FormFactorScene& blockers, std::vector<Pai
                   Criterion criterion, int threads, RefinementCount& count) {
   constexpr int block = 256;
   while (!wave.empty()) {
+    measure_exposure(h, blockers, h.exposed, threads);  // the nodes the last wave made
+    h.exposed = static_cast<int>(h.nodes.size());
     std::vector<Verdict> verdicts(wave.size());
     const int blocks = static_cast<int>((wave.size() + block - 1) / block);
     parallel_for(blocks, threads, [&](int b) {
@@ -86,8 +89,12 @@ void refine_pairs(Hierarchy& h, const FormFactorScene& blockers, std::vector<Pai
       }
       switch (v.what) {
         case Refinement::Accept:
+          // A link whose few shadow rays all found it hidden is kept (it carries
+          // nothing now): BF-refinement judges only stored links, and one of them may
+          // yet show a gap the rays missed. Dropped, F-refinement's coarse threshold
+          // lost for good a view a face's foot had of the floor (docs/13).
           ++count.accepted;
-          if (v.link.F > 0 && v.link.visibility > 0)
+          if (v.link.F > 0 && h.nodes[p].open && h.nodes[q].open)
             h.nodes[p].links.push_back(v.link);
           else
             ++count.carry_nothing;
