@@ -4,6 +4,8 @@
 // and scoring included), as lesson 12's table cannot. Not a lesson. For example, the
 // recipe lesson 12 finds nearest 2% at the lowest cost:
 //   12_cornell_bench --elements 2000 --ff monte-carlo --direct per-pixel
+// or lesson 13's hierarchical radiosity, which needs no --elements:
+//   12_cornell_bench --solver hierarchical --threshold 1e-3 --min-area 3e-4
 // prints one line: the recipe, elements, seconds from the quads to the picture, and the
 // relative RMS error over lesson 12's interior 8 x 8 blocks (percent).
 #include <string>
@@ -22,7 +24,7 @@ int main(int argc, char** argv) {
   gi::Lesson lesson("12_cornell_bench", "One radiosity recipe on the Cornell box, timed from the quads to the "
                                         "picture and scored against the path-traced truth.");
   gi::Recipe recipe;
-  std::string ff = "hemicube", direct = "per-pixel";
+  std::string ff = "hemicube", direct = "per-pixel", solver = "gauss-seidel";
   recipe.direct.light_cells = 4;
   lesson.options()
       .add("--elements", recipe.elements, "about how many elements", 20, 20000)
@@ -32,7 +34,12 @@ int main(int argc, char** argv) {
            "the hemicube's resolution, 0: chosen from the mesh", 0, 2000)
       .add("--direct", direct, "where the direct light comes from: drawn per pixel, exact on the mesh, or the "
                                "form factors like all light", {"per-pixel", "exact", "form-factors"})
-      .add("--light-cells", recipe.direct.light_cells, "the light cut into n x n cells for the direct light", 1, 64);
+      .add("--light-cells", recipe.direct.light_cells, "the light cut into n x n cells for the direct light", 1, 64)
+      .add("--solver", solver, "Gauss-Seidel on a uniform mesh, or hierarchical radiosity (lesson 13: no mesh, "
+                               "--elements, --ff, --rays and --resolution unused)", {"gauss-seidel", "hierarchical"})
+      .add("--threshold", recipe.hierarchical.refinement.threshold, "hierarchical: BF_eps", 1e-6, 1.0)
+      .add("--min-area", recipe.hierarchical.refinement.min_area, "hierarchical: the smallest node's share of the "
+                                                                   "scene's area", 1e-7, 0.1);
   return lesson.run(argc, argv, [&] {
     const gi::RadiosityScene scene = gi::cornell_box();
     const int size = 256;
@@ -45,6 +52,7 @@ int main(int argc, char** argv) {
 
     const gi::Timer timer;
     if (ff == "monte-carlo") recipe.form_factors.method = gi::FormFactorMethod::MonteCarlo;
+    if (solver == "hierarchical") recipe.solver = gi::RecipeSolver::Hierarchical;
     recipe.exact_direct = direct != "form-factors";
     recipe.threads = recipe.direct.threads = lesson.threads();
     const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, recipe);
@@ -57,9 +65,13 @@ int main(int argc, char** argv) {
     const double seconds = timer.seconds();
 
     const gi::PictureError error = gi::picture_error(picture, truth->mean, mask);
-    const std::string setting = recipe.form_factors.method == gi::FormFactorMethod::MonteCarlo
-                                    ? std::to_string(recipe.form_factors.rays) + " rays"
-                                    : "resolution " + std::to_string(r.form_factors.hemicube_resolution);
+    const std::string setting =
+        recipe.solver == gi::RecipeSolver::Hierarchical
+            ? "BF_eps " + gi::format_number(recipe.hierarchical.refinement.threshold, 0, gi::Format::Scientific) +
+                  ", min area " + gi::format_number(recipe.hierarchical.refinement.min_area, 0, gi::Format::Scientific)
+        : recipe.form_factors.method == gi::FormFactorMethod::MonteCarlo
+            ? std::to_string(recipe.form_factors.rays) + " rays"
+            : "resolution " + std::to_string(r.form_factors.hemicube_resolution);
     lesson.say((direct == "per-pixel" ? "direct per pixel, " : "") + gi::describe(recipe) + " (" + setting + "), " +
                std::to_string(r.mesh.elements.size()) + " elements: " +
                gi::format_number(seconds, 2, gi::Format::Fixed) + " s, relative RMS " +

@@ -86,9 +86,13 @@ std::vector<Method> radiosity_methods(bool full) {
       {"direct per pixel + Monte Carlo, Gauss-Seidel", sizes({150, 300}, {600, 1200, 2400}), per_pixel, true},
       {"direct per pixel + hemicube, Gauss-Seidel", sizes({}, {600, 1200}), per_pixel_hemicube, true},
   };
-  // HIERARCHICAL (lesson 13): once recipe.hpp has RecipeSolver::Hierarchical, its row is
-  // one line here, e.g. {"hierarchical, exact direct", sizes({...}, {...}), hierarchical}
-  // with a Recipe whose solver is Hierarchical; the table, chart and crops take it as is.
+  // Lesson 13's hierarchical radiosity: no uniform mesh (the elements are its leaves),
+  // BF_eps 3e-3 at lesson 13's min area 3e-4, the direct light per pixel as above.
+  gi::Recipe hierarchical = per_pixel;
+  hierarchical.solver = gi::RecipeSolver::Hierarchical;
+  hierarchical.hierarchical.refinement.threshold = 3e-3;
+  hierarchical.hierarchical.refinement.min_area = 3e-4;
+  list.push_back({"direct per pixel + hierarchical, BF_eps 3e-3", {0}, hierarchical, true});
   return list;
 }
 

@@ -58,39 +58,41 @@ Color DirectLighting::irradiance(const FormFactorScene& scene, const vec3& x, co
   return H;
 }
 
+Color direct_radiosity(const DirectLighting& lights, const FormFactorScene& scene, const Polygon& p, const Color& rho,
+                       int points) {
+  if (max_component(rho) <= 0) return Color(0.0);
+  const GaussRule& rule = gauss_legendre(points);
+  // Receiver points on the element's plane through its lifted centre, a hair above:
+  // no part of a slightly twisted element then blocks its own shadow rays.
+  const vec3 plane = lifted_centre(p) + 1e-7 * length(p.corners[2] - p.corners[0]) * p.normal;
+  const auto& c = p.corners;
+  Color integral(0.0);
+  double area = 0;
+  for (int u = 0; u < points; ++u)
+    for (int v = 0; v < points; ++v) {
+      const double s = rule.nodes[u], t = rule.nodes[v];
+      const vec3 on_surface = bilinear(c, s, t);
+      const vec3 x = on_surface + dot(plane - on_surface, p.normal) * p.normal;
+      // dA = |dx/ds x dx/dt| ds dt on the bilinear map (not constant unless a parallelogram).
+      const vec3 dx_ds = (1 - t) * (c[1] - c[0]) + t * (c[2] - c[3]);
+      const vec3 dx_dt = (1 - s) * (c[3] - c[0]) + s * (c[2] - c[1]);
+      const double w = rule.weights[u] * rule.weights[v] * length(cross(dx_ds, dx_dt));
+      integral += w * lights.irradiance(scene, x, p.normal);
+      area += w;
+    }
+  return rho * (integral / area);
+}
+
 std::vector<Color> direct_radiosity(const FormFactorScene& scene, const Mesh& mesh,
                                     const DirectLightSettings& settings) {
   check(settings);
   if (scene.polygons().size() != mesh.elements.size())
     throw std::invalid_argument("direct light: the scene must be built from the mesh's elements");
   const DirectLighting lights(mesh, settings.light_cells);
-  const GaussRule& rule = gauss_legendre(settings.receiver_points);
   std::vector<Color> D(mesh.elements.size(), Color(0.0));
   parallel_for(static_cast<int>(mesh.elements.size()), settings.threads, [&](int i) {
     const Element& e = mesh.elements[i];
-    const Color& rho = mesh.reflectance(e);
-    if (max_component(rho) <= 0) return;
-    const Polygon& p = e.shape;
-    // Receiver points on the element's plane through its lifted centre, a hair above:
-    // no part of a slightly twisted element then blocks its own shadow rays.
-    const vec3 plane = lifted_centre(p) + 1e-7 * length(p.corners[2] - p.corners[0]) * p.normal;
-    const auto& c = p.corners;
-    Color integral(0.0);
-    double area = 0;
-    for (int u = 0; u < settings.receiver_points; ++u)
-      for (int v = 0; v < settings.receiver_points; ++v) {
-        const double s = rule.nodes[u], t = rule.nodes[v];
-        const vec3 on_surface = bilinear(c, s, t);
-        const vec3 x = on_surface + dot(plane - on_surface, p.normal) * p.normal;
-        // dA = |dx/ds x dx/dt| ds dt on the bilinear map (not constant unless a parallelogram).
-        const vec3 dx_ds = (1 - t) * (c[1] - c[0]) + t * (c[2] - c[3]);
-        const vec3 dx_dt = (1 - s) * (c[3] - c[0]) + s * (c[2] - c[1]);
-        const double w = rule.weights[u] * rule.weights[v] * length(cross(dx_ds, dx_dt));
-        integral += w * lights.irradiance(scene, x, p.normal);
-        area += w;
-      }
-    const Color mean = integral / area;
-    D[i] = rho * mean;
+    D[i] = direct_radiosity(lights, scene, e.shape, mesh.reflectance(e), settings.receiver_points);
   });
   return D;
 }

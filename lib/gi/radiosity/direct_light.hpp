@@ -58,6 +58,12 @@ class DirectLighting {
 std::vector<Color> direct_radiosity(const FormFactorScene& scene, const Mesh& mesh,
                                     const DirectLightSettings& settings);
 
+// D of one polygon of reflectance rho, at points x points (1..8): what the function
+// above does for each element, here for any piece of a surface (hierarchical
+// radiosity's leaves). `scene` casts the shadow rays.
+Color direct_radiosity(const DirectLighting& lights, const FormFactorScene& scene, const Polygon& polygon,
+                       const Color& rho, int points);
+
 // What is left once the direct light D is known. Split B = E + B'; then
 //   B' = D + R F B'      (the light reflected once, exactly, plus all later bounces)
 // which is the radiosity equation with D in place of E: any solver of lesson 08-11

@@ -20,12 +20,21 @@ std::string describe_pixel_samples(const DisplaySettings& settings) {
 
 RadiosityPicture render_radiosity_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
                                           const Camera& camera, const DisplaySettings& settings) {
+  if (B.size() != mesh.elements.size()) throw std::invalid_argument("radiosity display: one B per element");
+  return render_radiosity_picture(scene, mesh, B,
+                                  settings.shading == Shading::Smooth ? vertex_radiosity(mesh, B) : std::vector<Color>(),
+                                  camera, settings);
+}
+
+RadiosityPicture render_radiosity_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
+                                          const std::vector<Color>& vertex_B, const Camera& camera,
+                                          const DisplaySettings& settings) {
   if (B.size() != mesh.elements.size() || scene.polygons().size() != mesh.elements.size())
     throw std::invalid_argument("radiosity display: one B per element, and a scene of the mesh's elements");
+  if (settings.shading == Shading::Smooth && vertex_B.size() != mesh.vertices.size())
+    throw std::invalid_argument("radiosity display: smooth shading needs one radiosity per vertex");
   if (settings.samples < 1 || settings.samples > 16) throw std::invalid_argument("display: samples must lie in [1, 16]");
   const CameraFrame frame = camera_frame(camera, settings.width, settings.height);
-  const std::vector<Color> vertex_B =
-      settings.shading == Shading::Smooth ? vertex_radiosity(mesh, B) : std::vector<Color>();
   RadiosityPicture picture{Image(settings.width, settings.height), Image(settings.width, settings.height)};
   const int n = settings.samples;
   parallel_for(settings.height, settings.threads, [&](int y) {

@@ -46,6 +46,12 @@ struct RadiosityPicture {
 };
 RadiosityPicture render_radiosity_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
                                           const Camera& camera, const DisplaySettings& settings);
+// The same with the vertex radiosities given, one per mesh vertex (Smooth shading
+// interpolates them), for meshes whose vertices need more than vertex_radiosity's
+// mean: the leaves of hierarchical radiosity, with their T-vertices (leaf_mesh.hpp).
+RadiosityPicture render_radiosity_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
+                                          const std::vector<Color>& vertex_B, const Camera& camera,
+                                          const DisplaySettings& settings);
 
 // "2 x 2 jittered eye rays, box filter": how the display samples each pixel.
 std::string describe_pixel_samples(const DisplaySettings& settings);

@@ -1,5 +1,6 @@
 #include "gi/radiosity/form_factor_formulas.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -58,12 +59,16 @@ double form_factor_point_to_polygon(const vec3& x, const vec3& n, const Polygon&
 }
 
 double form_factor_analytic(const Polygon& from, const Polygon& to, int order) {
+  return form_factor_analytic_range(from, to, order).mean;
+}
+
+FormFactorRange form_factor_analytic_range(const Polygon& from, const Polygon& to, int order) {
   if (order < 1 || order > 16) throw std::invalid_argument("analytic form factor: the order must lie in [1, 16]");
   check(from);
   check(to);
   const GaussRule& rule = gauss_legendre(order);
   const std::array<vec3, 4>& c = from.corners;
-  double sum = 0;
+  FormFactorRange range{0, 1e300, -1e300};
   for (int i = 0; i < order; ++i)
     for (int j = 0; j < order; ++j) {
       // The bilinear map of the unit square onto `from`, and its area element.
@@ -71,9 +76,12 @@ double form_factor_analytic(const Polygon& from, const Polygon& to, int order) {
       const vec3 x = bilinear(c, s, u);
       const vec3 ds = (1 - u) * (c[1] - c[0]) + u * (c[2] - c[3]);
       const vec3 du = (1 - s) * (c[3] - c[0]) + s * (c[2] - c[1]);
-      sum += rule.weights[i] * rule.weights[j] * length(cross(ds, du)) * point_to_polygon(x, from.normal, to);
+      const double F = point_to_polygon(x, from.normal, to);
+      range.mean += rule.weights[i] * rule.weights[j] * length(cross(ds, du)) * F;
+      range.least = std::min(range.least, F), range.greatest = std::max(range.greatest, F);
     }
-  return sum / from.area;
+  range.mean /= from.area;
+  return range;
 }
 
 }  // namespace gi

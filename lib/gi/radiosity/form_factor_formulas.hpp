@@ -34,4 +34,11 @@ double form_factor_point_to_polygon(const vec3& x, const vec3& n, const Polygon&
 // not smooth; the analytic method itself is form_factor_analytic_adaptive.
 double form_factor_analytic(const Polygon& from, const Polygon& to, int order);
 
+// The same rule's mean, with the least and the greatest point-to-polygon F over its
+// points: how much F changes across `from` (hierarchical radiosity's oracle).
+struct FormFactorRange {
+  double mean = 0, least = 0, greatest = 0;
+};
+FormFactorRange form_factor_analytic_range(const Polygon& from, const Polygon& to, int order);
+
 }  // namespace gi

@@ -54,7 +54,9 @@ vec3 lifted_centre(const Polygon& polygon);
 vec3 bilinear(const std::array<vec3, 4>& corners, double s, double t);
 
 // Its inverse: the (s, t) in [0, 1]^2 of a point p of a flat convex quadrilateral with
-// unit normal n (the display reads B there; the two-pass renderer too).
+// unit normal n, by Newton's method from the middle (the map is nearly affine: three
+// steps suffice). The display reads B there; the two-pass renderer and the hierarchy's
+// leaf display too.
 vec2 unbilinear(const std::array<vec3, 4>& corners, const vec3& n, const vec3& p);
 
 }  // namespace gi

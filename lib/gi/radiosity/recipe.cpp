@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "gi/core/timer.hpp"
+#include "gi/radiosity/hierarchical/hierarchical_run.hpp"
 #include "gi/radiosity/progressive.hpp"
 #include "gi/radiosity/solvers.hpp"
 
@@ -18,12 +19,13 @@ std::string name(RecipeSolver solver) {
     case RecipeSolver::GaussSeidel: return "Gauss-Seidel";
     case RecipeSolver::Southwell: return "Southwell";
     case RecipeSolver::Progressive: return "progressive";
+    case RecipeSolver::Hierarchical: return "hierarchical";
   }
   return "?";
 }
 
 std::string describe(const Recipe& r) {
-  const std::string ff = name(r.form_factors.method);
+  const std::string ff = r.solver == RecipeSolver::Hierarchical ? "links" : name(r.form_factors.method);
   const std::string light = r.exact_direct ? "exact direct + " + ff + " indirect" : ff + " for all light";
   return light + ", " + name(r.solver);
 }
@@ -66,13 +68,38 @@ SolverResult run_solver(const RadiositySystem& system, const Mesh& mesh, const S
     case RecipeSolver::GaussSeidel: return solve_gauss_seidel(system, options);
     case RecipeSolver::Southwell: return solve_southwell(system, options);
     case RecipeSolver::Progressive: return solve_progressive(system, mesh, row, options);
+    case RecipeSolver::Hierarchical: break;  // solve_recipe hands it to hierarchical_recipe
   }
   throw std::invalid_argument("solve_recipe: unknown solver");
+}
+
+// Hierarchical radiosity from start to finish: refinement counts as its form
+// factors, the solves as its solver, the rest of its clock as the direct light.
+RecipeResult hierarchical_recipe(const std::vector<Surface>& surfaces, const Recipe& r) {
+  HierarchicalSettings settings = r.hierarchical;
+  settings.exact_direct = r.exact_direct;
+  settings.direct = r.direct;
+  settings.tolerance = r.tolerance;
+  const Timer timer;
+  HierarchicalRun run = run_hierarchical({"", surfaces, {}}, settings, r.threads);
+  RecipeResult result;
+  for (const RefinementRound& round : run.result.rounds)
+    result.form_factor_seconds += round.refine_seconds, result.solve_seconds += round.solve_seconds;
+  result.direct_seconds = r.exact_direct ? std::max(0.0, timer.seconds() - result.form_factor_seconds -
+                                                             result.solve_seconds)
+                                         : 0.0;
+  result.mesh = leaf_mesh(run.hierarchy).mesh;
+  result.B = std::move(run.result.solution.B);
+  result.direct = std::move(run.result.direct);
+  result.status = run.result.solution.status;
+  result.form_factors = r.form_factors;
+  return result;
 }
 
 }  // namespace
 
 RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe) {
+  if (recipe.solver == RecipeSolver::Hierarchical) return hierarchical_recipe(surfaces, recipe);
   RecipeResult result;
   result.mesh = make_mesh(surfaces, {patch_size_for(surfaces, recipe.elements, recipe.elements_per_side),
                                      recipe.elements_per_side});

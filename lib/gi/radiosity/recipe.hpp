@@ -4,6 +4,7 @@
 
 #include "gi/radiosity/direct_light.hpp"
 #include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/hierarchical/hierarchical_solver.hpp"
 #include "gi/radiosity/mesh.hpp"
 #include "gi/radiosity/solver.hpp"
 
@@ -12,8 +13,10 @@ namespace gi {
 // One way to solve a radiosity scene from start to finish -- a mesh, form factors,
 // where the direct light comes from, a solver -- so that lessons 12 and 15 can set
 // every method side by side on one scene, timed the same way.
-enum class RecipeSolver { Direct, Jacobi, GaussSeidel, Southwell, Progressive };
-std::string name(RecipeSolver solver);  // "direct", "Jacobi", "Gauss-Seidel", "Southwell", "progressive"
+// Hierarchical: no uniform mesh at all -- Hanrahan et al.'s quadtrees and links
+// (hierarchical/hierarchical_solver.hpp), its leaves the mesh of the result.
+enum class RecipeSolver { Direct, Jacobi, GaussSeidel, Southwell, Progressive, Hierarchical };
+std::string name(RecipeSolver solver);  // "direct", "Jacobi", "Gauss-Seidel", "Southwell", "progressive", "hierarchical"
 
 struct Recipe {
   int elements = 1000;       // about how many elements (patch_size_for)
@@ -26,6 +29,10 @@ struct Recipe {
   RecipeSolver solver = RecipeSolver::GaussSeidel;
   double tolerance = 1e-5;  // the solver's (options.tolerance)
   int threads = 0;
+  // RecipeSolver::Hierarchical only: its thresholds. elements, elements_per_side and
+  // form_factors are then unused; exact_direct, direct, tolerance and threads are
+  // handed to it.
+  HierarchicalSettings hierarchical;
 };
 
 // "exact direct + hemicube indirect, Gauss-Seidel": what a table row calls the recipe
@@ -33,13 +40,13 @@ struct Recipe {
 std::string describe(const Recipe& recipe);
 
 struct RecipeResult {
-  Mesh mesh;
+  Mesh mesh;  // Hierarchical: its leaves (leaf_mesh.hpp; for display without cracks, leaf_vertex_radiosity)
   std::vector<Color> B;
   std::vector<Color> direct;      // D, exact_direct only: B - E - D is what bounced more than once
   SolveStatus status = SolveStatus::StoppedAtLimit;
   FormFactorSettings form_factors;  // as used: the hemicube's resolution filled in
   HemicubeMatrixStats hemicube;     // receivers smaller than a hemicube cell, over the rows computed
-  double form_factor_seconds = 0;  // the matrix (for progressive: the rows, as they are shot)
+  double form_factor_seconds = 0;  // the matrix (for progressive: the rows, as they are shot; hierarchical: refinement)
   double direct_seconds = 0;       // direct_radiosity (0 without exact_direct)
   double solve_seconds = 0;        // the solver, form factors excluded
   double seconds() const { return form_factor_seconds + direct_seconds + solve_seconds; }

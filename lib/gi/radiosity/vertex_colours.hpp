@@ -19,5 +19,9 @@ std::vector<Color> vertex_radiosity(const Mesh& mesh, const std::vector<Color>& 
 // atomically; throws std::runtime_error for a NaN or infinite radiosity.
 void write_ply(const Mesh& mesh, const std::vector<Color>& vertex_B, double exposure,
                const std::filesystem::path& file);
+// The same with the faces given as outlines of vertex indices (any count from 3, counter-clockwise),
+// e.g. leaves with the T-vertices along their edges (leaf_mesh.hpp).
+void write_ply(const Mesh& mesh, const std::vector<Color>& vertex_B, double exposure, const std::filesystem::path& file,
+               const std::vector<std::vector<int>>& faces);
 
 }  // namespace gi

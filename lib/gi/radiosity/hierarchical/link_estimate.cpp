@@ -1,0 +1,83 @@
+#include "gi/radiosity/hierarchical/link_estimate.hpp"
+
+#include <algorithm>
+
+#include "gi/radiosity/form_factor_formulas.hpp"
+#include "gi/radiosity/hierarchical/exposure.hpp"
+#include "gi/radiosity/quadrature.hpp"
+#include "gi/radiosity/hierarchical/visibility.hpp"
+
+namespace gi {
+
+namespace {
+
+// The largest height of a corner of q above p's plane (negative: all behind it).
+double highest_above(const Polygon& p, const Polygon& q) {
+  double highest = -1e300;
+  for (const vec3& c : q.corners) highest = std::max(highest, dot(c - p.centre, p.normal));
+  return highest;
+}
+
+// F_pq over the receiver's open part only: the mean over those of its Gauss points
+// that lie in open cells (Node::open). A buried point sees the back of the solid it
+// is in (F = 0 to its faces), and counting it dimmed a floor leaf at a block's foot
+// by its buried share. The mean over all points when none is in an open cell.
+double open_mean(const Polygon& p, std::uint16_t open, const Polygon& q, int order, double mean) {
+  const GaussRule& rule = gauss_legendre(order);
+  double sum = 0, weight = 0;
+  for (int i = 0; i < order; ++i)
+    for (int j = 0; j < order; ++j) {
+      const double s = rule.nodes[i], t = rule.nodes[j];
+      const int cell = exposure_cells * static_cast<int>(t * exposure_cells) + static_cast<int>(s * exposure_cells);
+      if (!((open >> cell) & 1u)) continue;
+      const vec3 ds = (1 - t) * (p.corners[1] - p.corners[0]) + t * (p.corners[2] - p.corners[3]);
+      const vec3 dt = (1 - s) * (p.corners[3] - p.corners[0]) + s * (p.corners[2] - p.corners[1]);
+      const double w = rule.weights[i] * rule.weights[j] * length(cross(ds, dt));
+      sum += w * form_factor_point_to_polygon(bilinear(p.corners, s, t), p.normal, q), weight += w;
+    }
+  return weight > 0 ? sum / weight : mean;
+}
+
+}  // namespace
+
+bool can_exchange(const Polygon& p, const Polygon& q) {
+  // "Strictly" with a margin of 1e-9 of the sizes: a neighbour in the same plane is
+  // not in front of it, whatever the round-off.
+  const double size = std::sqrt(std::max(p.area, q.area));
+  return highest_above(p, q) > 1e-9 * size && highest_above(q, p) > 1e-9 * size;
+}
+
+Link estimate_link(const FormFactorScene& blockers, const Hierarchy& h, int receiver, int source, int order,
+                   int rays_per_side, std::uint64_t seed) {
+  const Polygon& p = h.nodes[receiver].shape;
+  const Polygon& q = h.nodes[source].shape;
+  FormFactorRange F = form_factor_analytic_range(p, q, order);
+  // Gauss points lie inside; F changes most where the receiver comes nearest the
+  // source (beside a neighbour's edge it rises to 1/2). So the spread also looks at the
+  // corners, and at the receiver's points nearest the source's corners and centre
+  // (their feet on its plane, clamped into it): a block's face meets the floor along
+  // its bottom edge, where F to the floor in front peaks between the corners, and a
+  // link judged by its inner points alone handed a face's foot a hundredth of its view
+  // of the floor there (the blocks came out dark, docs/13). Points set in by
+  // corner_inset of the receiver's size, where F is finite.
+  const auto look_at = [&](double u, double v) {
+    u = std::clamp(u, corner_inset, 1 - corner_inset), v = std::clamp(v, corner_inset, 1 - corner_inset);
+    const double at = form_factor_point_to_polygon(bilinear(p.corners, u, v), p.normal, q);
+    F.least = std::min(F.least, at), F.greatest = std::max(F.greatest, at);
+  };
+  for (const double u : {0.0, 1.0})
+    for (const double v : {0.0, 1.0}) look_at(u, v);
+  for (const vec3& c : {q.corners[0], q.corners[1], q.corners[2], q.corners[3], q.centre}) {
+    const vec2 st = unbilinear(p.corners, p.normal, c - dot(c - p.centre, p.normal) * p.normal);
+    look_at(st.x, st.y);
+  }
+  if (h.nodes[receiver].open != 0xFFFF) F.mean = open_mean(p, h.nodes[receiver].open, q, order, F.mean);
+  Link link{receiver, source, F.mean, F.mean * p.area / q.area, 0.0};  // F_qp by reciprocity: A_p F_pq = A_q F_qp
+  link.F_min = static_cast<float>(F.least), link.F_max = static_cast<float>(F.greatest);
+  const LinkVisibility seen = link_visibility(blockers, h, receiver, source, rays_per_side, seed);
+  link.visibility = seen.V;
+  for (int c = 0; c < 4; ++c) link.by_quarter[c] = static_cast<float>(seen.by_quarter[c]);
+  return link;
+}
+
+}  // namespace gi

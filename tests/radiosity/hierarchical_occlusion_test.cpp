@@ -1,0 +1,116 @@
+// Hierarchical radiosity where surfaces hide and touch each other: parts buried under
+// a block, the near field at a block's foot, and light that comes mostly from part of
+// a source. Each test names the defect it guards against (docs/13, "Buried parts and
+// near fields").
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gi/core/onb.hpp"
+#include "gi/core/rng.hpp"
+#include "gi/radiosity/hierarchical/exposure.hpp"
+#include "gi/radiosity/hierarchical/hierarchical_solver.hpp"
+#include "gi/radiosity/hierarchical/link_estimate.hpp"
+#include "gi/radiosity/radiosity_scenes.hpp"
+
+using gi::Color;
+using gi::vec3;
+
+namespace {
+
+// Corners c0, c0 + u, c0 + u + v, c0 + v: the normal is u x v.
+gi::Surface square(vec3 c0, vec3 u, vec3 v) { return {"", {c0, c0 + u, c0 + u + v, c0 + v}, Color(0.5)}; }
+
+gi::FormFactorScene blockers_of(const gi::Hierarchy& h) {
+  std::vector<gi::Polygon> shapes;
+  for (std::size_t s = 0; s < h.surfaces.size(); ++s) shapes.push_back(h.nodes[s].shape);
+  return gi::FormFactorScene(shapes);
+}
+
+gi::HierarchicalSettings settings(double bf_eps, double min_area) {
+  gi::HierarchicalSettings s;
+  s.refinement.threshold = bf_eps;
+  s.refinement.min_area = min_area;
+  return s;
+}
+
+// A 2 x 2 floor facing up with a unit cube on it (five faces, no bottom) over
+// [0.5, 1.5]^2, and a single-sided panel facing up at height 0.3 over x in [1.6, 1.9].
+std::vector<gi::Surface> floor_with_cube_and_panel() {
+  return {square({0, 0, 0}, {0, 0, 2}, {2, 0, 0}),
+          square({0.5, 1, 0.5}, {0, 0, 1}, {1, 0, 0}),     // top, up
+          square({0.5, 0, 0.5}, {0, 0, 1}, {0, 1, 0}),     // -x
+          square({1.5, 0, 0.5}, {0, 1, 0}, {0, 0, 1}),     // +x
+          square({0.5, 0, 0.5}, {0, 1, 0}, {1, 0, 0}),     // -z
+          square({0.5, 0, 1.5}, {1, 0, 0}, {0, 1, 0}),     // +z
+          square({1.6, 0.3, 0.5}, {0, 0, 1}, {0.3, 0, 0})};  // the panel, up
+}
+
+}  // namespace
+
+TEST(Exposure, APointIsBuriedOnlyInsideASolid) {
+  const gi::Hierarchy h = gi::make_hierarchy(floor_with_cube_and_panel());
+  const gi::FormFactorScene blockers = blockers_of(h);
+  const vec3 up(0, 1, 0);
+  EXPECT_TRUE(gi::buried(blockers, {1.0, 0, 1.0}, up, 2)) << "under the cube";
+  EXPECT_TRUE(gi::buried(blockers, {0.52, 0, 1.48}, up, 2)) << "under the cube, by a corner";
+  EXPECT_FALSE(gi::buried(blockers, {0.2, 0, 0.2}, up, 2)) << "in the open";
+  EXPECT_FALSE(gi::buried(blockers, {0.48, 0, 1.0}, up, 2)) << "just outside the cube's foot";
+  EXPECT_FALSE(gi::buried(blockers, {1.75, 0, 1.0}, up, 2))
+      << "under a single-sided panel, whose back it sees straight up: the room is past its edges";
+}
+
+TEST(Exposure, AFloorUnderACubeHasAQuarterOfItsCellsBuried) {
+  // The cells' centres lie at 0.25, 0.75, 1.25, 1.75 each way: the cube covers the
+  // middle 2 x 2 of them. Open areas add up the tree: the floor's root holds 3/4 of its area.
+  gi::Hierarchy h = gi::make_hierarchy(floor_with_cube_and_panel());
+  const gi::FormFactorScene blockers = blockers_of(h);
+  gi::measure_exposure(h, blockers, 0, 2);
+  EXPECT_EQ(__builtin_popcount(h.nodes[0].open), 12);
+  EXPECT_NEAR(h.nodes[0].open_area, 0.75 * 4, 1e-12);
+  EXPECT_EQ(h.nodes[1].open, 0xFFFF) << "the cube's top is open";
+  gi::split(h, 0);
+  gi::measure_exposure(h, blockers, static_cast<int>(h.surfaces.size()), 2);
+  EXPECT_NEAR(h.nodes[0].open_area, 0.75 * 4, 1e-12) << "the root's open area is its children's sum";
+}
+
+TEST(LinkEstimate, SeesTheNearFieldWhereASourceTouchesTheMiddleOfAnEdge) {
+  // A wall 4 wide and 10 high stands on a floor piece 1 x 0.5 that touches only the
+  // middle of its foot. F from the wall to the piece peaks near 1/2 at the foot's middle,
+  // between the wall's corners and below its Gauss points: the link must see that peak,
+  // or the oracle accepts it whole and the wall's foot gets the mean F of the whole
+  // wall (the Cornell box's blocks came out dark: a face's foot got a hundredth of its
+  // view of the floor in front).
+  const gi::Hierarchy h = gi::make_hierarchy({square({1, 0, 0}, {0, 10, 0}, {0, 0, 4}),       // wall at x = 1, facing +x
+                                              square({1, 0, 1.5}, {0, 0, 1}, {0.5, 0, 0})});  // floor piece, up
+  const gi::Link link = gi::estimate_link(blockers_of(h), h, 0, 1, 3, 4, 1);
+  EXPECT_LT(link.F, 0.05) << "the wall as a whole sees little of the piece";
+  EXPECT_GT(link.F_max, 0.3) << "but the middle of its foot sees it fill nearly half its view";
+}
+
+// Every leaf of a closed white furnace (E = 1, rho = 0.5) has B = 2, blocks or not: it
+// sees some surface in every direction. With the blocks, floor nodes straddle their
+// feet and faces touch the floor; before the fixes of docs/13 (buried parts left out of
+// means, visibility and F; the near field seen; links found hidden kept) the blocks'
+// faces came out 0.4-1.0% dark on average and single leaves 7% dark. Measured at
+// minimum area 1e-3: every wholly open leaf within 0.85%, each surface's open-area mean
+// within 0.27% (a floor leaf with only a sliver open can still be 34% off: its open
+// cells are judged at their centres). Asserted: 2% and 0.75%.
+TEST(Hierarchical, AFurnaceWithTheBlocksGivesEOverOneMinusRhoAtEveryOpenLeaf) {
+  std::vector<gi::Surface> faces = gi::cornell_box(true).surfaces;
+  for (gi::Surface& f : faces) f.reflectance = Color(0.5), f.emission = Color(1.0);
+  gi::Hierarchy h = gi::make_hierarchy(faces);
+  const gi::HierarchicalResult r = gi::solve_hierarchical(h, blockers_of(h), settings(1e-3, 1e-3), 2);
+  ASSERT_EQ(r.solution.status, gi::SolveStatus::Converged);
+  const std::vector<int> leaf = gi::leaves(h);
+  std::vector<double> sum(faces.size()), area(faces.size());
+  double worst = 0;
+  for (std::size_t k = 0; k < leaf.size(); ++k) {
+    const gi::Node& n = h.nodes[leaf[k]];
+    if (n.open == 0xFFFF) worst = std::max(worst, std::abs(r.solution.B[k].x / 2 - 1));
+    sum[n.surface] += n.open_area * r.solution.B[k].x, area[n.surface] += n.open_area;
+  }
+  EXPECT_LT(worst, 0.02) << "the worst wholly open leaf";
+  for (std::size_t s = 0; s < faces.size(); ++s)
+    EXPECT_NEAR(sum[s] / area[s], 2.0, 0.0075 * 2) << faces[s].name;
+}
