@@ -113,7 +113,7 @@ TEST(Ex13_2_Visibility, SameRaysForTheSameSeed) {
   const gi::FormFactorScene blockers = world(h);
   const gi::LinkVisibility a = gi::link_visibility(blockers, h, 1, 0, 4, 7), b = gi::link_visibility(blockers, h, 1, 0, 4, 7);
   EXPECT_EQ(a.V, b.V) << "cast the rays of shadow_rays(hierarchy, receiver, source, n, seed): the same every time";
-  EXPECT_EQ(a.by_quarter, b.by_quarter);
+  EXPECT_EQ(a.by_quarter, b.by_quarter) << "and the same shares of the quarters";
 }
 
 TEST(Ex13_3_Gather, AddsFTimesVisibilityTimesBOverTheLinks) {
