@@ -62,13 +62,15 @@ double form_factor_analytic(const Polygon& from, const Polygon& to, int order) {
   return form_factor_analytic_range(from, to, order).mean;
 }
 
-FormFactorRange form_factor_analytic_range(const Polygon& from, const Polygon& to, int order) {
+FormFactorRange form_factor_analytic_range(const Polygon& from, const Polygon& to, int order,
+                                           const std::function<bool(double s, double t)>& counts) {
   if (order < 1 || order > 16) throw std::invalid_argument("analytic form factor: the order must lie in [1, 16]");
   check(from);
   check(to);
   const GaussRule& rule = gauss_legendre(order);
   const std::array<vec3, 4>& c = from.corners;
   FormFactorRange range{0, 1e300, -1e300};
+  double counted = 0, counted_area = 0;  // the mean's sums over the points `counts` accepts
   for (int i = 0; i < order; ++i)
     for (int j = 0; j < order; ++j) {
       // The bilinear map of the unit square onto `from`, and its area element.
@@ -77,10 +79,12 @@ FormFactorRange form_factor_analytic_range(const Polygon& from, const Polygon& t
       const vec3 ds = (1 - u) * (c[1] - c[0]) + u * (c[2] - c[3]);
       const vec3 du = (1 - s) * (c[3] - c[0]) + s * (c[2] - c[1]);
       const double F = point_to_polygon(x, from.normal, to);
-      range.mean += rule.weights[i] * rule.weights[j] * length(cross(ds, du)) * F;
+      const double w = rule.weights[i] * rule.weights[j] * length(cross(ds, du));
+      range.mean += w * F;
+      if (counts && counts(s, u)) counted += w * F, counted_area += w;
       range.least = std::min(range.least, F), range.greatest = std::max(range.greatest, F);
     }
-  range.mean /= from.area;
+  range.mean = counted_area > 0 ? counted / counted_area : range.mean / from.area;
   return range;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 #include <array>
+#include <functional>
 
 #include "gi/radiosity/polygon.hpp"
 
@@ -35,10 +36,14 @@ double form_factor_point_to_polygon(const vec3& x, const vec3& n, const Polygon&
 double form_factor_analytic(const Polygon& from, const Polygon& to, int order);
 
 // The same rule's mean, with the least and the greatest point-to-polygon F over its
-// points: how much F changes across `from` (hierarchical radiosity's oracle).
+// points: how much F changes across `from` (hierarchical radiosity's oracle). Given
+// `counts`, the mean is over the points it accepts ((s, t) in from's parameter square:
+// the part of `from` that matters, such as a quadtree node's open part), and over all
+// of them if it accepts none; the least and greatest are always over all of them.
 struct FormFactorRange {
   double mean = 0, least = 0, greatest = 0;
 };
-FormFactorRange form_factor_analytic_range(const Polygon& from, const Polygon& to, int order);
+FormFactorRange form_factor_analytic_range(const Polygon& from, const Polygon& to, int order,
+                                           const std::function<bool(double s, double t)>& counts = {});
 
 }  // namespace gi

@@ -1,5 +1,6 @@
 #include "gi/radiosity/hierarchical/exposure.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "gi/core/onb.hpp"
@@ -28,6 +29,12 @@ std::uint16_t open_cells(const FormFactorScene& blockers, const Hierarchy& h, in
       if (!buried(blockers, centre, n.shape.normal, size)) open |= static_cast<std::uint16_t>(1u << (exposure_cells * v + u));
     }
   return open;
+}
+
+bool open_at(const Node& node, double u, double v) {
+  const int cu = std::min(static_cast<int>(u * exposure_cells), exposure_cells - 1);
+  const int cv = std::min(static_cast<int>(v * exposure_cells), exposure_cells - 1);
+  return (node.open >> (exposure_cells * cv + cu)) & 1u;
 }
 
 void measure_exposure(Hierarchy& h, const FormFactorScene& blockers, int first, int threads) {

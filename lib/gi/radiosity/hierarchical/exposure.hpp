@@ -25,6 +25,7 @@ bool buried(const FormFactorScene& blockers, const vec3& point, const vec3& norm
 // parameter square: bit 4 v + u of Node::open is set when cell (u, v) is open.
 inline constexpr int exposure_cells = 4;
 std::uint16_t open_cells(const FormFactorScene& blockers, const Hierarchy& hierarchy, int node);
+bool open_at(const Node& node, double u, double v);  // is the cell holding the node's point (u, v) open?
 
 // Judges the cells of nodes [first, end) (new ones: splits append), in parallel, then
 // sets every node's open area: a leaf's area times its share of open cells, above

@@ -4,7 +4,6 @@
 
 #include "gi/radiosity/form_factor_formulas.hpp"
 #include "gi/radiosity/hierarchical/exposure.hpp"
-#include "gi/radiosity/quadrature.hpp"
 #include "gi/radiosity/hierarchical/visibility.hpp"
 
 namespace gi {
@@ -16,26 +15,6 @@ double highest_above(const Polygon& p, const Polygon& q) {
   double highest = -1e300;
   for (const vec3& c : q.corners) highest = std::max(highest, dot(c - p.centre, p.normal));
   return highest;
-}
-
-// F_pq over the receiver's open part only: the mean over those of its Gauss points
-// that lie in open cells (Node::open). A buried point sees the back of the solid it
-// is in (F = 0 to its faces), and counting it dimmed a floor leaf at a block's foot
-// by its buried share. The mean over all points when none is in an open cell.
-double open_mean(const Polygon& p, std::uint16_t open, const Polygon& q, int order, double mean) {
-  const GaussRule& rule = gauss_legendre(order);
-  double sum = 0, weight = 0;
-  for (int i = 0; i < order; ++i)
-    for (int j = 0; j < order; ++j) {
-      const double s = rule.nodes[i], t = rule.nodes[j];
-      const int cell = exposure_cells * static_cast<int>(t * exposure_cells) + static_cast<int>(s * exposure_cells);
-      if (!((open >> cell) & 1u)) continue;
-      const vec3 ds = (1 - t) * (p.corners[1] - p.corners[0]) + t * (p.corners[2] - p.corners[3]);
-      const vec3 dt = (1 - s) * (p.corners[3] - p.corners[0]) + s * (p.corners[2] - p.corners[1]);
-      const double w = rule.weights[i] * rule.weights[j] * length(cross(ds, dt));
-      sum += w * form_factor_point_to_polygon(bilinear(p.corners, s, t), p.normal, q), weight += w;
-    }
-  return weight > 0 ? sum / weight : mean;
 }
 
 }  // namespace
@@ -51,7 +30,13 @@ Link estimate_link(const FormFactorScene& blockers, const Hierarchy& h, int rece
                    int rays_per_side, std::uint64_t seed) {
   const Polygon& p = h.nodes[receiver].shape;
   const Polygon& q = h.nodes[source].shape;
-  FormFactorRange F = form_factor_analytic_range(p, q, order);
+  // F_pq over the receiver's open part: a buried point sees the back of the solid it is
+  // in (F = 0 to its faces), and counting it dimmed a floor node at a block's foot by its
+  // buried share. (Wholly open: over all of it, as Gauss's rule has it.)
+  const Node& node = h.nodes[receiver];
+  const auto open = [&](double s, double t) { return open_at(node, s, t); };
+  FormFactorRange F = node.open == 0xFFFF ? form_factor_analytic_range(p, q, order)
+                                          : form_factor_analytic_range(p, q, order, open);
   // Gauss points lie inside; F changes most where the receiver comes nearest the
   // source (beside a neighbour's edge it rises to 1/2). So the spread also looks at the
   // corners, and at the receiver's points nearest the source's corners and centre
@@ -71,7 +56,6 @@ Link estimate_link(const FormFactorScene& blockers, const Hierarchy& h, int rece
     const vec2 st = unbilinear(p.corners, p.normal, c - dot(c - p.centre, p.normal) * p.normal);
     look_at(st.x, st.y);
   }
-  if (h.nodes[receiver].open != 0xFFFF) F.mean = open_mean(p, h.nodes[receiver].open, q, order, F.mean);
   Link link{receiver, source, F.mean, F.mean * p.area / q.area, 0.0};  // F_qp by reciprocity: A_p F_pq = A_q F_qp
   link.F_min = static_cast<float>(F.least), link.F_max = static_cast<float>(F.greatest);
   const LinkVisibility seen = link_visibility(blockers, h, receiver, source, rays_per_side, seed);
