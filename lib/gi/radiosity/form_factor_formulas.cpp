@@ -63,7 +63,8 @@ double form_factor_analytic(const Polygon& from, const Polygon& to, int order) {
 }
 
 FormFactorRange form_factor_analytic_range(const Polygon& from, const Polygon& to, int order,
-                                           const std::function<bool(double s, double t)>& counts) {
+                                           const std::function<bool(double s, double t)>& counts,
+                                           const std::vector<vec2>& also_at) {
   if (order < 1 || order > 16) throw std::invalid_argument("analytic form factor: the order must lie in [1, 16]");
   check(from);
   check(to);
@@ -85,6 +86,10 @@ FormFactorRange form_factor_analytic_range(const Polygon& from, const Polygon& t
       range.least = std::min(range.least, F), range.greatest = std::max(range.greatest, F);
     }
   range.mean = counted_area > 0 ? counted / counted_area : range.mean / from.area;
+  for (const vec2& st : also_at) {
+    const double F = point_to_polygon(bilinear(c, st.x, st.y), from.normal, to);
+    range.least = std::min(range.least, F), range.greatest = std::max(range.greatest, F);
+  }
   return range;
 }
 

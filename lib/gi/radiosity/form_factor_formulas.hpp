@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <functional>
+#include <vector>
 
 #include "gi/radiosity/polygon.hpp"
 
@@ -39,11 +40,14 @@ double form_factor_analytic(const Polygon& from, const Polygon& to, int order);
 // points: how much F changes across `from` (hierarchical radiosity's oracle). Given
 // `counts`, the mean is over the points it accepts ((s, t) in from's parameter square:
 // the part of `from` that matters, such as a quadtree node's open part), and over all
-// of them if it accepts none; the least and greatest are always over all of them.
+// of them if it accepts none; the least and greatest are always over all of them, and
+// over the points `also_at` of from's parameter square too (where F may peak between
+// the rule's points), which do not count in the mean.
 struct FormFactorRange {
   double mean = 0, least = 0, greatest = 0;
 };
 FormFactorRange form_factor_analytic_range(const Polygon& from, const Polygon& to, int order,
-                                           const std::function<bool(double s, double t)>& counts = {});
+                                           const std::function<bool(double s, double t)>& counts = {},
+                                           const std::vector<vec2>& also_at = {});
 
 }  // namespace gi

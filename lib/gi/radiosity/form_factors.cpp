@@ -120,12 +120,17 @@ std::optional<FormFactorScene::RayHit> FormFactorScene::first_hit(const Ray& ray
   return RayHit{hit->object / 2, dot(ray.direction, hit->normal) < 0, hit->t};
 }
 
-bool FormFactorScene::visible(const vec3& from, const vec3& to) const {
+std::optional<Ray> segment_between(const vec3& from, const vec3& to) {
   const vec3 d = to - from;
   const double distance = length(d);
-  if (!(distance > 0)) return true;
+  if (!(distance > 0)) return std::nullopt;
   const double margin = 1e-7 * distance;
-  return !any_hit(world_, Ray{from, d / distance, margin, distance - margin});
+  return Ray{from, d / distance, margin, distance - margin};
+}
+
+bool FormFactorScene::visible(const vec3& from, const vec3& to) const {
+  const std::optional<Ray> segment = segment_between(from, to);
+  return !segment || !any_hit(world_, *segment);
 }
 
 FormFactorRow form_factor_row_with_diagnostics(const FormFactorScene& scene, const Polygon& from, int row,

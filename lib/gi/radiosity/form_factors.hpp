@@ -61,10 +61,19 @@ class FormFactorScene {
   // Can the points see each other? Nothing strictly between them (the ends excluded).
   bool visible(const vec3& from, const vec3& to) const;
 
+  // The World the rays are cast into: polygon k is its triangles 2k and 2k + 1, in a
+  // BVH (shaft.hpp gathers the few that stand near a link from it).
+  const World& world() const { return world_; }
+
  private:
   std::vector<Polygon> polygons_;
   World world_;
 };
+
+// The ray visible() casts between two points: from `from` towards `to`, cut back at
+// both ends by 1e-7 of their distance (the points' own surfaces block nothing).
+// Nothing for two coincident points, which see each other.
+std::optional<Ray> segment_between(const vec3& from, const vec3& to);
 
 // F from `from` to every polygon of the scene. `row` picks the random stream
 // (MonteCarlo), so that a matrix is the same for any thread count. Throws

@@ -35,8 +35,6 @@ Link estimate_link(const FormFactorScene& blockers, const Hierarchy& h, int rece
   // buried share. (Wholly open: over all of it, as Gauss's rule has it.)
   const Node& node = h.nodes[receiver];
   const auto open = [&](double s, double t) { return open_at(node, s, t); };
-  FormFactorRange F = node.open == 0xFFFF ? form_factor_analytic_range(p, q, order)
-                                          : form_factor_analytic_range(p, q, order, open);
   // Gauss points lie inside; F changes most where the receiver comes nearest the
   // source (beside a neighbour's edge it rises to 1/2). So the spread also looks at the
   // corners, and at the receiver's points nearest the source's corners and centre
@@ -45,17 +43,15 @@ Link estimate_link(const FormFactorScene& blockers, const Hierarchy& h, int rece
   // link judged by its inner points alone handed a face's foot a hundredth of its view
   // of the floor there (the blocks came out dark, docs/13). Points set in by
   // corner_inset of the receiver's size, where F is finite.
-  const auto look_at = [&](double u, double v) {
-    u = std::clamp(u, corner_inset, 1 - corner_inset), v = std::clamp(v, corner_inset, 1 - corner_inset);
-    const double at = form_factor_point_to_polygon(bilinear(p.corners, u, v), p.normal, q);
-    F.least = std::min(F.least, at), F.greatest = std::max(F.greatest, at);
-  };
+  std::vector<vec2> look_at;
+  look_at.reserve(9);
+  const auto inset = [](vec2 st) { return glm::clamp(st, corner_inset, 1 - corner_inset); };
   for (const double u : {0.0, 1.0})
-    for (const double v : {0.0, 1.0}) look_at(u, v);
-  for (const vec3& c : {q.corners[0], q.corners[1], q.corners[2], q.corners[3], q.centre}) {
-    const vec2 st = unbilinear(p.corners, p.normal, c - dot(c - p.centre, p.normal) * p.normal);
-    look_at(st.x, st.y);
-  }
+    for (const double v : {0.0, 1.0}) look_at.push_back(inset({u, v}));
+  for (const vec3& c : {q.corners[0], q.corners[1], q.corners[2], q.corners[3], q.centre})
+    look_at.push_back(inset(unbilinear(p.corners, p.normal, c - dot(c - p.centre, p.normal) * p.normal)));
+  const FormFactorRange F = form_factor_analytic_range(
+      p, q, order, node.open == 0xFFFF ? std::function<bool(double, double)>{} : open, look_at);
   Link link{receiver, source, F.mean, F.mean * p.area / q.area, 0.0};  // F_qp by reciprocity: A_p F_pq = A_q F_qp
   link.F_min = static_cast<float>(F.least), link.F_max = static_cast<float>(F.greatest);
   const LinkVisibility seen = link_visibility(blockers, h, receiver, source, rays_per_side, seed);

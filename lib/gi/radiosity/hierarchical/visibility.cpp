@@ -8,6 +8,7 @@
 #include "gi/core/not_implemented.hpp"
 #include "gi/core/rng.hpp"
 #include "gi/radiosity/hierarchical/exposure.hpp"
+#include "gi/radiosity/shaft.hpp"
 
 namespace gi {
 
@@ -40,6 +41,14 @@ std::vector<ShadowRay> shadow_rays(const Hierarchy& h, int receiver, int source,
 LinkVisibility link_visibility(const FormFactorScene& blockers, const Hierarchy& h, int receiver, int source, int n,
                                std::uint64_t seed) {
   const std::vector<ShadowRay> rays = shadow_rays(h, receiver, source, n, seed);
+  // Only what stands between the two can block their rays (shaft.hpp; between two walls
+  // of a room, nothing at all). Every ray ends inside the outline of the nodes' lifted
+  // corners, so the shaft around those eight points holds every ray.
+  std::vector<vec3> corners;
+  for (const int node : {receiver, source})
+    for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})
+      corners.push_back(lifted_point(h, h.nodes[node], u, v));
+  const Shaft shaft(blockers, corners);
   const vec3& n_p = h.nodes[receiver].shape.normal;
   const vec3& n_q = h.nodes[source].shape.normal;
   const double size = std::sqrt(h.total_area);  // buried's scale
@@ -50,7 +59,7 @@ LinkVisibility link_visibility(const FormFactorScene& blockers, const Hierarchy&
     const vec3 d = ray.to - ray.from;
     const double cos_p = dot(d, n_p), cos_q = -dot(d, n_q);  // times |d| each
     if (cos_p <= 0 || cos_q <= 0) continue;                   // carries no light
-    const bool gets_through = blockers.visible(ray.from, ray.to);
+    const bool gets_through = shaft.visible(ray.from, ray.to);
     if (!gets_through && ray.may_start_buried && buried(blockers, ray.from, n_p, size)) continue;  // no light there
     const double w = cos_p * cos_q / (dot(d, d) * dot(d, d));  // cos_p cos_q / r^2
     carrying += w;
