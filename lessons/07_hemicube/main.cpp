@@ -78,6 +78,11 @@ double total_reciprocity_error(const gi::FormFactorMatrix& F, const std::vector<
   return difference / total;
 }
 
+// 4000000 as "4M", 40000 as "40000".
+std::string rays_text(int rays) {
+  return rays % 1'000'000 == 0 ? std::to_string(rays / 1'000'000) + "M" : std::to_string(rays);
+}
+
 // The L1 distance between two rows, relative to the reference's sum.
 double row_error(const std::vector<double>& row, const std::vector<double>& reference) {
   double difference = 0, total = 0;
@@ -86,17 +91,19 @@ double row_error(const std::vector<double>& row, const std::vector<double>& refe
 }
 
 // One row of a finely meshed box: the hemicube at resolution 100 against rays cast
-// from the element (Monte Carlo), both measured against a row of 4 million rays.
-void speed_table(const gi::Mesh& mesh, int element, gi::Lesson& lesson) {
+// from the element (Monte Carlo: a tenth, a third and all of `most_rays`), both
+// measured against a row of 40/3 as many rays (4 million for the default 300 000).
+void speed_table(const gi::Mesh& mesh, int element, int most_rays, gi::Lesson& lesson) {
   const gi::FormFactorScene scene(gi::element_shapes(mesh));
   const gi::Polygon& from = scene.polygons()[element];
   gi::FormFactorSettings reference_settings;
   reference_settings.method = gi::FormFactorMethod::MonteCarlo;
-  reference_settings.rays = 4'000'000;
+  reference_settings.rays = most_rays / 3 * 40;
   reference_settings.seed = lesson.seed();
   const std::vector<double> reference = gi::form_factor_row(scene, from, 999, reference_settings);
   gi::Table table("One row against " + std::to_string(scene.polygons().size()) +
-                      " elements, one thread: time and L1 error against 4M rays (median of 7 rows)",
+                      " elements, one thread: time and L1 error against " + rays_text(reference_settings.rays) +
+                      " rays (median of 7 rows)",
                   {{"method"}, {"samples"}, {"ms per row", 2}, {"rows per second", 0}, {"row error", 2, gi::Format::Scientific}});
   const auto measure = [&](const std::string& label, long long samples, const gi::FormFactorSettings& s) {
     std::vector<double> times;
@@ -110,7 +117,7 @@ void speed_table(const gi::Mesh& mesh, int element, gi::Lesson& lesson) {
   };
   gi::FormFactorSettings hemicube;
   measure("hemicube, resolution 100", 3 * 100 * 100, hemicube);
-  for (int rays : {30'000, 100'000, 300'000}) {
+  for (int rays : {most_rays / 10, most_rays / 3, most_rays}) {
     gi::FormFactorSettings mc = reference_settings;
     mc.rays = rays;
     measure("rays (Monte Carlo)", rays, mc);
@@ -133,12 +140,13 @@ void matrix_picture(const gi::FormFactorMatrix& F, int resolution, gi::Lesson& l
 int main(int argc, char** argv) {
   gi::Lesson lesson("07_hemicube", "The hemicube: item buffer, delta form factors, the form-factor matrix, and "
                                    "row sums and reciprocity against resolution (Cornell box).");
-  int elements = 600, resolution = 100, max_resolution = 200, speed_elements = 10000;
+  int elements = 600, resolution = 100, max_resolution = 200, speed_elements = 10000, speed_rays = 300'000;
   lesson.options()
       .add("--elements", elements, "about how many elements to mesh the Cornell box into", 20, 5000)
       .add("--resolution", resolution, "hemicube resolution for the pictures", 10, 1000, gi::even)
       .add("--max-resolution", max_resolution, "largest resolution in the table (400 adds a row that takes longer than all the others)", 10, 1000, gi::even)
-      .add("--speed-elements", speed_elements, "elements for the one-row timing", 100, 100000);
+      .add("--speed-elements", speed_elements, "elements for the one-row timing", 100, 100000)
+      .add("--speed-rays", speed_rays, "most rays of a Monte Carlo row in the timing (also a tenth and a third of it; the reference row 40/3 of it)", 300, 1'000'000);
   return lesson.run(argc, argv, [&] {
     const gi::RadiosityScene scene = gi::cornell_box(true);  // closed: rows must sum to 1
     const gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, elements, 1), 1});
@@ -184,7 +192,7 @@ int main(int argc, char** argv) {
     // 3. The speed figure: one row against a finely meshed box, one thread, and the
     // ray-cast rows that reach the same accuracy on the floor element of part 1.
     const gi::Mesh fine = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, speed_elements, 1), 1});
-    speed_table(fine, floor_element(fine), lesson);
+    speed_table(fine, floor_element(fine), speed_rays, lesson);
     lesson.say("\nimages: " + lesson.out().string() + "/ (item_buffer.png, delta_form_factors.png, form_factor_matrix.png)");
   });
 }

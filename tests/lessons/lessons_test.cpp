@@ -128,7 +128,7 @@ TEST(Lessons, FormFactorsCompareEveryMethodWithTheClosedForms) {
 
 TEST(Lessons, HemicubeWritesItsPicturesAndTables) {
   // The picture's resolution, 30, is not one of the table's (10, 20): it is drawn anyway.
-  const LessonRun r = run("07_hemicube", "--elements 40 --resolution 30 --max-resolution 20 --speed-elements 100 --out " +
+  const LessonRun r = run("07_hemicube", "--elements 40 --resolution 30 --max-resolution 20 --speed-elements 100 --speed-rays 3000 --out " +
                                              out_dir("07"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("reciprocity"), std::string::npos);
