@@ -26,8 +26,7 @@ bool can_exchange(const Polygon& p, const Polygon& q) {
   return highest_above(p, q) > 1e-9 * size && highest_above(q, p) > 1e-9 * size;
 }
 
-Link estimate_link(const FormFactorScene& blockers, const Hierarchy& h, int receiver, int source, int order,
-                   int rays_per_side, std::uint64_t seed) {
+Link estimate_form_factors(const Hierarchy& h, int receiver, int source, int order) {
   const Polygon& p = h.nodes[receiver].shape;
   const Polygon& q = h.nodes[source].shape;
   // F_pq over the receiver's open part: a buried point sees the back of the solid it is
@@ -45,18 +44,33 @@ Link estimate_link(const FormFactorScene& blockers, const Hierarchy& h, int rece
   // corner_inset of the receiver's size, where F is finite.
   std::vector<vec2> look_at;
   look_at.reserve(9);
-  const auto inset = [](vec2 st) { return glm::clamp(st, corner_inset, 1 - corner_inset); };
+  const auto look = [&](vec2 st) {
+    st = glm::clamp(st, corner_inset, 1 - corner_inset);
+    // A far source's feet all clamp to the receiver's corners and edges: each point once.
+    if (std::find(look_at.begin(), look_at.end(), st) == look_at.end()) look_at.push_back(st);
+  };
   for (const double u : {0.0, 1.0})
-    for (const double v : {0.0, 1.0}) look_at.push_back(inset({u, v}));
+    for (const double v : {0.0, 1.0}) look({u, v});
   for (const vec3& c : {q.corners[0], q.corners[1], q.corners[2], q.corners[3], q.centre})
-    look_at.push_back(inset(unbilinear(p.corners, p.normal, c - dot(c - p.centre, p.normal) * p.normal)));
+    look(unbilinear(p.corners, p.normal, c - dot(c - p.centre, p.normal) * p.normal));
   const FormFactorRange F = form_factor_analytic_range(
       p, q, order, node.open == 0xFFFF ? std::function<bool(double, double)>{} : open, look_at);
   Link link{receiver, source, F.mean, F.mean * p.area / q.area, 0.0};  // F_qp by reciprocity: A_p F_pq = A_q F_qp
   link.F_min = static_cast<float>(F.least), link.F_max = static_cast<float>(F.greatest);
-  const LinkVisibility seen = link_visibility(blockers, h, receiver, source, rays_per_side, seed);
+  return link;
+}
+
+void estimate_visibility(Link& link, const FormFactorScene& blockers, const Hierarchy& h, int rays_per_side,
+                         std::uint64_t seed) {
+  const LinkVisibility seen = link_visibility(blockers, h, link.receiver, link.source, rays_per_side, seed);
   link.visibility = seen.V;
   for (int c = 0; c < 4; ++c) link.by_quarter[c] = static_cast<float>(seen.by_quarter[c]);
+}
+
+Link estimate_link(const FormFactorScene& blockers, const Hierarchy& h, int receiver, int source, int order,
+                   int rays_per_side, std::uint64_t seed) {
+  Link link = estimate_form_factors(h, receiver, source, order);
+  estimate_visibility(link, blockers, h, rays_per_side, seed);
   return link;
 }
 

@@ -26,4 +26,11 @@ inline constexpr double corner_inset = 1e-4;
 Link estimate_link(const FormFactorScene& blockers, const Hierarchy& hierarchy, int receiver, int source, int order,
                    int rays_per_side, std::uint64_t seed);
 
+// The same in two steps: the form factors alone (F, F_back, F_min, F_max; V left at 0),
+// which is all the oracle needs where it would split the same end with or without a
+// shadow edge inside; then V and its quarters' shares, for a link that may be kept.
+Link estimate_form_factors(const Hierarchy& hierarchy, int receiver, int source, int order);
+void estimate_visibility(Link& link, const FormFactorScene& blockers, const Hierarchy& hierarchy, int rays_per_side,
+                         std::uint64_t seed);
+
 }  // namespace gi

@@ -50,8 +50,21 @@ Verdict judge(const Hierarchy& h, const FormFactorScene& blockers, Pair pair, co
   const Node& q = h.nodes[pair.source];
   Verdict v;
   if (!(v.exchange = can_exchange(p.shape, q.shape))) return v;
-  v.link = estimate_link(blockers, h, pair.receiver, pair.source, s.order, s.rays_per_side, s.seed);
+  v.link = estimate_form_factors(h, pair.receiver, pair.source, s.order);
   const bool split_p = can_split(h, p, s), split_q = can_split(h, q, s);
+  const Brightness b = brightness(h, p, q, criterion);
+  if (v.link.F > 0) {
+    // V counts in the oracle only as whether a shadow edge lies inside (0 < V < 1).
+    // Where it would cut the same end either way the link is not kept: no rays needed.
+    Link clear = v.link, edge = v.link;
+    clear.visibility = 1, edge.visibility = 0.5;
+    const Refinement what = oracle(clear, b, threshold(s, criterion), split_p, split_q);
+    if (what != Refinement::Accept && what == oracle(edge, b, threshold(s, criterion), split_p, split_q)) {
+      v.what = what;
+      return v;
+    }
+  }
+  estimate_visibility(v.link, blockers, h, s.rays_per_side, s.seed);
   if (v.link.F == 0 && v.link.F_back == 0 && v.link.visibility > 0) {
     // Facing, yet neither's sample points see the other: the estimates say nothing
     // (each lies partly behind the other's plane). Cut the larger until they do.
@@ -60,7 +73,7 @@ Verdict judge(const Hierarchy& h, const FormFactorScene& blockers, Pair pair, co
                                                                     : Refinement::Accept;
     return v;
   }
-  v.what = oracle(v.link, brightness(h, p, q, criterion), threshold(s, criterion), split_p, split_q);
+  v.what = oracle(v.link, b, threshold(s, criterion), split_p, split_q);
   return v;
 }
 
