@@ -19,6 +19,7 @@ Hierarchy make_hierarchy(const std::vector<Surface>& surfaces) {
     root.E = root.B = surfaces[s].emission;
     root.open_area = root.shape.area;
     h.nodes.push_back(root);
+    h.lifts.push_back(lift(root.shape));
     h.total_area += root.shape.area;
     h.largest_emission = std::max(h.largest_emission, max_component(root.E));
   }
@@ -55,7 +56,10 @@ void split(Hierarchy& h, int index) {
 vec3 lifted_point(const Hierarchy& h, const Node& node, double u, double v) {
   const vec3 p = node_point(h, node, u, v);
   const Polygon& surface = h.nodes[node.surface].shape;  // the root: the whole surface
-  return p + (lift(surface) - dot(p - surface.centre, surface.normal)) * surface.normal;
+  // Cached by make_hierarchy; a hierarchy put together by hand has no cache.
+  const std::size_t s = static_cast<std::size_t>(node.surface);
+  const double up = s < h.lifts.size() ? h.lifts[s] : lift(surface);
+  return p + (up - dot(p - surface.centre, surface.normal)) * surface.normal;
 }
 
 int leaf_containing(const Hierarchy& h, int surface, double s, double t) {

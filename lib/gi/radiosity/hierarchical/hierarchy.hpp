@@ -46,6 +46,7 @@ struct Hierarchy {
   double total_area = 0;    // of all surfaces
   double largest_emission = 0;  // max over surfaces and channels of E: the scale of BF-refinement
   int exposed = 0;  // nodes [0, exposed) have their open cells judged (exposure.hpp)
+  std::vector<double> lifts;  // lift(surface s's polygon), polygon.hpp: for lifted_point, at every shadow ray's ends
 };
 
 // One root per surface, every B = E, no links. Throws std::invalid_argument for a bad
