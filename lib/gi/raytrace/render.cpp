@@ -1,6 +1,8 @@
 #include "gi/raytrace/render.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,8 +14,54 @@
 namespace gi {
 
 namespace {
+
 constexpr int tile_size = 32;
+
+// What a tile's pixels share: the scene, the settings, the camera, the image, the
+// tile's ray counts and its random stream (re-seeded for every pixel).
+struct TileWork {
+  const World& world;
+  const RenderSettings& settings;
+  const CameraFrame& frame;
+  RenderResult& result;
+  RayCounts& counts;
+  Rng& rng;
+};
+
+// Pixels x0 .. x1 - 1 of row y, as sample_pixel samples them.
+void render_row(TileWork& w, int y, int x0, int x1) {
+  const std::function<Color(double, double)> radiance = [&](double px, double py) {
+    w.counts.count(RayKind::Primary, 0);
+    return trace(w.world, primary_ray(w.frame, px, py), w.settings.trace, w.counts, w.rng);
+  };
+  for (int x = x0; x < x1; ++x) {
+    const std::size_t pixel = static_cast<std::size_t>(y) * w.settings.width + x;
+    w.rng = Rng(w.settings.seed, pixel);
+    w.result.image.pixels[pixel] =
+        Pixel(sample_pixel(w.settings.sampling, x, y, w.rng, radiance, w.result.samples[pixel]));
+  }
 }
+
+// The same for one eye ray through each pixel's centre (Sampler::Centre, the default):
+// the same rays, traced in the same order, so the same bytes as render_row (a test
+// compares the two). Each eye ray is made one pixel ahead: normalising its direction
+// is a square root and a division in a chain, about 30 cycles, and made just before
+// its trace it held up the start of every pixel (perf: 3% of the s10 render).
+void render_row_of_centres(TileWork& w, int y, int x0, int x1) {
+  const double py = y + 0.5;
+  Ray eye = primary_ray(w.frame, x0 + 0.5, py);
+  for (int x = x0; x < x1; ++x) {
+    const Ray next = primary_ray(w.frame, (x + 1) + 0.5, py);  // past the row's end: made, not used
+    const std::size_t pixel = static_cast<std::size_t>(y) * w.settings.width + x;
+    w.rng = Rng(w.settings.seed, pixel);
+    w.counts.count(RayKind::Primary, 0);
+    w.result.image.pixels[pixel] = Pixel(trace(w.world, eye, w.settings.trace, w.counts, w.rng));
+    w.result.samples[pixel] = 1;
+    eye = next;
+  }
+}
+
+}  // namespace
 
 std::string describe_pixel_samples(const Sampling& s) {
   const std::string grid = std::to_string(s.n) + " x " + std::to_string(s.n) + " ";
@@ -58,20 +106,15 @@ RenderResult render(const World& world, const RenderSettings& settings) {
   std::vector<RayCounts> tile_counts(static_cast<std::size_t>(tiles_x) * tiles_y);
   const Timer timer;
   parallel_for(tiles_x * tiles_y, settings.threads, [&](int tile) {
-    RayCounts& counts = tile_counts[tile];
-    Rng rng;  // re-seeded for every pixel below
-    const int x0 = (tile % tiles_x) * tile_size;
-    const int y0 = (tile / tiles_x) * tile_size;
-    const std::function<Color(double, double)> radiance = [&](double px, double py) {
-      counts.count(RayKind::Primary, 0);
-      return trace(world, primary_ray(frame, px, py), settings.trace, counts, rng);
-    };
-    for (int y = y0; y < std::min(y0 + tile_size, settings.height); ++y) {
-      for (int x = x0; x < std::min(x0 + tile_size, settings.width); ++x) {
-        const std::size_t pixel = static_cast<std::size_t>(y) * settings.width + x;
-        rng = Rng(settings.seed, pixel);
-        result.image.pixels[pixel] = Pixel(sample_pixel(settings.sampling, x, y, rng, radiance, result.samples[pixel]));
-      }
+    Rng rng;  // re-seeded for every pixel
+    TileWork work{world, settings, frame, result, tile_counts[tile], rng};
+    const int x0 = (tile % tiles_x) * tile_size, x1 = std::min(x0 + tile_size, settings.width);
+    const int y0 = (tile / tiles_x) * tile_size, y1 = std::min(y0 + tile_size, settings.height);
+    for (int y = y0; y < y1; ++y) {
+      if (settings.sampling.sampler == Sampler::Centre)
+        render_row_of_centres(work, y, x0, x1);
+      else
+        render_row(work, y, x0, x1);
     }
   });
   result.seconds = timer.seconds();
