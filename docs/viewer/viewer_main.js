@@ -134,7 +134,8 @@ function start() {
   options($("y-axis"), Object.entries(quantities).filter(([k]) => k !== "error" || withError),
           shooting ? "unshot" : withError ? "error" : "residual_2");
   const sameWork = data.runs.every((r) => r.workPerStep === data.runs[0].workPerStep);
-  options($("x-axis"), Object.entries(axes), sameWork ? "step" : "work");
+  // A hierarchical iteration is a pass over the links, not a sweep of n^2: no work axis.
+  options($("x-axis"), Object.entries(axes).filter(([k]) => k !== "work" || !data.hierarchy), sameWork ? "step" : "work");
   $("y-axis").addEventListener("change", chart);
   $("x-axis").addEventListener("change", chart);
 

@@ -51,7 +51,8 @@ namespace gi {
 //   hierarchy         (optional) the elements are the leaves of quadtrees of nodes
 //     links_carry     what the links' light is, in words (all light, or only what
 //                     has bounced when the direct light is exact)
-//     nodes           surface, level, parent int32 (-1: a root), 1 per node;
+//     nodes           surface, level, parent int32 (-1: a root; a parent comes
+//                     before its children), 1 per node;
 //                     corners float32, 12 per node: its four corners in the order
 //                     of mesh.elements
 //     element_node    int32, 1 per element: the leaf node it is
@@ -61,7 +62,9 @@ namespace gi {
 //     links           receiver, source int32 (nodes), F, visibility float32, 1 per
 //                     link; light float32, 3 per link: the radiosity the link
 //                     brings its receiver before rho, F sum_c V_c B_c over the
-//                     source's quarters (push_pull.hpp's gather), B as shown
+//                     source's quarters (push_pull.hpp's gather), B the nodes
+//                     hold after the solve (with exact direct light that is
+//                     B' = B - E, which the links carry: hierarchical_solver.hpp)
 //     t_vertices      vertex, a, b int32, t float32, 1 per T-vertex, coarsest
 //                     first: a smooth picture sets B_v = (1 - t) B_a + t B_b after
 //                     the area-weighted mean, so no crack opens (leaf_mesh.hpp)

@@ -49,6 +49,8 @@ ViewerData hierarchical_viewer_data(const std::string& lesson, const std::string
   const LeafMesh leaves = leaf_mesh(run.hierarchy);
   ViewerData d = viewer_data(lesson, title, leaves.mesh, camera, exposure);
   const SolverResult& solution = run.result.solution;
+  // Work per step 1, unused: an iteration is a pass over the links, not a sweep of n^2
+  // multiply-adds, and the page offers no work axis for a hierarchy.
   ViewerRun shown{"hierarchical", "iteration", stop_reason(solution, "iteration"), 1, solution.history, {}, false};
   shown.frames.push_back({solution.history.empty() ? 0 : solution.history.back().step, shown_radiosity(run)});
   d.runs.push_back(std::move(shown));
