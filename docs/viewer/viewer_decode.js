@@ -57,6 +57,46 @@ function readFrames(f, elements, what) {
   return frames;
 }
 
+// Hierarchical radiosity's nodes, links and T-vertices (optional), checked against
+// the mesh; also hands the mesh its T-vertices, so that smooth shading has no cracks.
+function readHierarchy(h, mesh) {
+  const int = (a, per, items, what) => GI.typedArray(a, "int32", per, items, "hierarchy " + what);
+  const parent = int(h.nodes.parent, 1, undefined, "parent"), nodes = parent.length;
+  const links = h.links, t = h.t_vertices;
+  const receiver = int(links.receiver, 1, undefined, "link receivers"), count = receiver.length;
+  const out = {
+    linksCarry: h.links_carry,
+    nodes: {
+      count: nodes,
+      parent,
+      surface: int(h.nodes.surface, 1, nodes, "node surfaces"),
+      level: int(h.nodes.level, 1, nodes, "node levels"),
+      corners: GI.typedArray(h.nodes.corners, "float32", 12, nodes, "hierarchy node corners"),
+    },
+    elementNode: int(h.element_node, 1, mesh.count, "element_node"),
+    elementGathered: GI.typedArray(h.element_gathered, "float32", 3, mesh.count, "hierarchy element_gathered"),
+    links: {
+      count,
+      receiver,
+      source: int(links.source, 1, count, "link sources"),
+      F: GI.typedArray(links.F, "float32", 1, count, "hierarchy link F"),
+      visibility: GI.typedArray(links.visibility, "float32", 1, count, "hierarchy link visibility"),
+      light: GI.typedArray(links.light, "float32", 3, count, "hierarchy link light"),
+    },
+  };
+  const inRange = (a, size) => a.every((i) => i >= 0 && i < size);
+  if (!inRange(out.elementNode, nodes) || !inRange(receiver, nodes) || !inRange(out.links.source, nodes) ||
+      !parent.every((p, n) => p >= -1 && p < n))
+    throw new Error("hierarchy: a node index is out of range");
+  const vertex = int(t.vertex, 1, undefined, "T-vertices");
+  mesh.tVertices = { vertex, a: int(t.a, 1, vertex.length, "T-vertex ends"), b: int(t.b, 1, vertex.length, "T-vertex ends"),
+                     t: GI.typedArray(t.t, "float32", 1, vertex.length, "hierarchy T-vertex t") };
+  const vertices = mesh.vertices.length / 3;
+  if (![vertex, mesh.tVertices.a, mesh.tVertices.b].every((a) => inRange(a, vertices)))
+    throw new Error("hierarchy: a T-vertex is not a vertex");
+  return out;
+}
+
 // The whole data, checked; throws an Error that says what is wrong.
 GI.readData = function (raw) {
   if (!raw) throw new Error("no data: viewer_data.js is missing or empty (run the lesson to write it)");
@@ -92,6 +132,8 @@ GI.readData = function (raw) {
     weight: l.weight,
     B: GI.typedArray(l.B, "float32", 3, n, l.name + " B"),
   }));
-  return { lesson: raw.lesson, title: raw.title, exposure: raw.exposure, camera: raw.camera, mesh, runs, lights };
+  const hierarchy = raw.hierarchy ? readHierarchy(raw.hierarchy, mesh) : null;
+  return { lesson: raw.lesson, title: raw.title, exposure: raw.exposure, camera: raw.camera, mesh, runs, lights,
+           hierarchy };
 };
 })();

@@ -4,7 +4,10 @@
 //   flat    each element one colour, its own B
 //   smooth  Gouraud's: each vertex the area-weighted mean of the elements that share
 //           it, B_v = sum_e A_e B_e / sum_e A_e (vertex_colours.hpp), and the four
-//           corners blended bilinearly across the element
+//           corners blended bilinearly across the element; where the mesh has
+//           T-vertices (hierarchical radiosity's leaves, leaf_mesh.hpp), each takes
+//           the value the larger element's edge has there, B_v = (1 - t) B_a + t B_b,
+//           so that both sides of the edge show the same colours: no crack
 // Backs of surfaces are dark grey (the lessons draw them black) so that the box can
 // be told from the void when the camera orbits outside it.
 "use strict";
@@ -59,7 +62,8 @@ function compile(gl, type, source) {
   return shader;
 }
 
-// B per vertex, the area-weighted mean of the elements at it (vertex_colours.hpp).
+// B per vertex, the area-weighted mean of the elements at it (vertex_colours.hpp),
+// then the T-vertices from their edges, coarsest first (leaf_vertex_radiosity).
 function vertexRadiosity(mesh, B) {
   const sum = new Float64Array(mesh.vertices.length), weight = new Float64Array(mesh.vertices.length / 3);
   for (let e = 0; e < mesh.count; ++e)
@@ -70,6 +74,10 @@ function vertexRadiosity(mesh, B) {
     }
   for (let v = 0; v < weight.length; ++v)
     for (let k = 0; k < 3; ++k) sum[3 * v + k] = weight[v] > 0 ? sum[3 * v + k] / weight[v] : 0;
+  const tv = mesh.tVertices;
+  for (let i = 0; tv && i < tv.vertex.length; ++i)
+    for (let k = 0; k < 3; ++k)
+      sum[3 * tv.vertex[i] + k] = (1 - tv.t[i]) * sum[3 * tv.a[i] + k] + tv.t[i] * sum[3 * tv.b[i] + k];
   return sum;
 }
 
@@ -118,6 +126,7 @@ GI.MeshView = function (canvas, mesh) {
   ["c0", "c1", "c2", "c3"].forEach((name, k) => attribute(name, colourBuffer, 3, 52, 12 * k));
   attribute("mark", colourBuffer, 1, 52, 48);
   const colours = new Float32Array(52 * n);
+  const lines = new GI.Lines(gl, compile);  // viewer_pick.js
 
   // The colours of one view: B per element, smooth or flat, and the patch to mark (-1: none).
   function fill(B, smooth, markedPatch) {
@@ -135,7 +144,8 @@ GI.MeshView = function (canvas, mesh) {
     gl.bufferData(gl.ARRAY_BUFFER, colours, gl.DYNAMIC_DRAW);
   }
 
-  // Draws views side by side: each {B, smooth, marked} in an equal share of the width.
+  // Draws views side by side: each {B, smooth, marked, lines (GI.Segments, optional)}
+  // in an equal share of the width.
   this.draw = function (views, orbit, exposure, outline) {
     gl.viewport(0, 0, canvas.width, canvas.height);
     gl.clearColor(0, 0, 0, 1);
@@ -149,8 +159,13 @@ GI.MeshView = function (canvas, mesh) {
     views.forEach((view, i) => {
       fill(view.B, view.smooth, view.marked);
       gl.viewport(i * width, 0, width, canvas.height);
-      gl.uniformMatrix4fv(gl.getUniformLocation(program, "matrix"), false, orbit.matrix(width / canvas.height));
+      const matrix = orbit.matrix(width / canvas.height);
+      gl.uniformMatrix4fv(gl.getUniformLocation(program, "matrix"), false, matrix);
       gl.drawElements(gl.TRIANGLES, 6 * n, gl.UNSIGNED_INT, 0);
+      if (!view.lines) return;
+      lines.draw(view.lines, matrix, width, canvas.height);
+      gl.useProgram(program);
+      gl.bindVertexArray(vao);
     });
   };
 };

@@ -3,7 +3,9 @@
 //    frames side by side, each at the same work (for shooting, the patch that shot
 //    in the step is outlined in yellow); their curves beside, the step marked;
 //  - relighting: a slider per light, the mesh showing B = sum_l w_l B_l, where B_l
-//    solves (I - RF) B = E_l for light l alone: the system is linear in E.
+//    solves (I - RF) B = E_l for light l alone: the system is linear in E;
+//  - hierarchical radiosity (data.hierarchy): a click picks a leaf, and the links
+//    that bring it light are outlined and listed (viewer_links.js).
 "use strict";
 var GI = window.GI || (window.GI = {});
 
@@ -40,6 +42,9 @@ function start() {
   const view = new GI.MeshView(canvas, data.mesh);
   const orbit = new GI.Orbit(data.camera, GI.meshRadius(data.mesh));
   const curves = new GI.Curves($("curves"), $("readout"));
+  const linkView = data.hierarchy ? new GI.LinkView(data, $("links")) : null;
+  $("links").hidden = !linkView;
+  if (linkView) $("outline-name").textContent = "leaf outlines (the mesh the oracle made)";
 
   // The frame of `run` with the most work done not beyond `work` (its first if none).
   function frameAt(run, work) {
@@ -78,6 +83,7 @@ function start() {
                                     primary.frames.length + ")";
       curves.mark(markerX(current));
     }
+    if (linkView && views.length === 1) views[0].lines = linkView.segments();
     const size = views.length === 1 ? 480 : Math.max(240, Math.floor(960 / views.length));
     if (canvas.width !== size * views.length) canvas.width = size * views.length;
     if (canvas.height !== size) canvas.height = size;
@@ -128,7 +134,8 @@ function start() {
   options($("y-axis"), Object.entries(quantities).filter(([k]) => k !== "error" || withError),
           shooting ? "unshot" : withError ? "error" : "residual_2");
   const sameWork = data.runs.every((r) => r.workPerStep === data.runs[0].workPerStep);
-  options($("x-axis"), Object.entries(axes), sameWork ? "step" : "work");
+  // A hierarchical iteration is a pass over the links, not a sweep of n^2: no work axis.
+  options($("x-axis"), Object.entries(axes).filter(([k]) => k !== "work" || !data.hierarchy), sameWork ? "step" : "work");
   $("y-axis").addEventListener("change", chart);
   $("x-axis").addEventListener("change", chart);
 
@@ -156,6 +163,17 @@ function start() {
   $("ambient-row").hidden = !drawn.some((r) => r.frames.some((f) => f.ambient));
   $("reset").addEventListener("click", () => { orbit.reset(); draw(); });
   GI.attachOrbit(canvas, orbit, draw);
+  // A click that did not turn the camera picks the leaf under the pointer.
+  let down = null;
+  canvas.addEventListener("pointerdown", (e) => { down = [e.clientX, e.clientY]; });
+  canvas.addEventListener("click", (e) => {
+    if (!linkView || !down || Math.hypot(e.clientX - down[0], e.clientY - down[1]) > 3) return;
+    const box = canvas.getBoundingClientRect();
+    const x = e.clientX - box.left - canvas.clientLeft, y = e.clientY - box.top - canvas.clientTop;
+    const matrix = orbit.matrix(canvas.width / canvas.height);
+    GI.pickLeaf(GI.pickElement(data.mesh, matrix, (2 * x) / canvas.clientWidth - 1, 1 - (2 * y) / canvas.clientHeight));
+  });
+  GI.pickLeaf = (element) => { linkView.pick(element); draw(); };  // also the browser test's way in
 
   data.lights.forEach((light, k) => {
     const label = document.createElement("label"), input = document.createElement("input"), value = document.createElement("span");

@@ -19,6 +19,7 @@
 #include "gi/radiosity/picture_error.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/vertex_colours.hpp"
+#include "gi/radiosity/viewer_hierarchy.hpp"
 #include "gi/report/lesson.hpp"
 
 namespace {
@@ -131,6 +132,13 @@ void thresholds(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
                   [&](const std::filesystem::path& file) {
                     gi::write_ply(mesh.mesh, gi::leaf_vertex_radiosity(mesh, B), s.exposure, file, mesh.faces);
                   });
+      lesson.viewer("the leaves at the lesson's BF_eps: pick one to see the links that bring it light",
+                    [&](const std::filesystem::path& file) {
+                      gi::write_viewer_data(gi::hierarchical_viewer_data(lesson.name(), "Hierarchical radiosity: "
+                                                                         "the leaves and the links that light them",
+                                                                         run, s.scene.camera, s.exposure),
+                                            file);
+                    });
       gi::Table rounds("Rounds at BF_eps " + gi::format_number(eps, 0, gi::Format::Scientific) +
                            ", exact direct light (round 0: F-refinement)",
                        {{"round"}, {"nodes"}, {"leaves"}, {"links"}, {"judged"}, {"replaced"}, {"iterations"},

@@ -7,16 +7,25 @@ Runs lessons 08 to 12 small into a scratch folder, then checks that
   - each viewer loads with no console error and draws; moving the step slider (a
     real click on it), a light's slider and dragging the camera change the canvas;
     the pointer over the chart writes the curves' values under it;
+  - lesson 13's viewer (hierarchical radiosity): a click on the mesh picks a leaf
+    and a scripted pick of a known one lists its links; the readout's count equals
+    the count of links this script finds in viewer_data.js for that leaf and its
+    ancestors (decoded here, not with the page's code), the sum it prints agrees
+    with what the solver handed the leaf, and the outlines change the canvas;
   - the mesh of lesson 11 after a chosen shot matches tests/data/viewer_11_shot.png:
     mean absolute difference at most 2 of 255 per channel, and at most 1% of the
     pixels off by more than 32 in some channel (rasterisation may differ at edges
     between CPUs; a wrong colour, camera or shot moves far more than that).
-Writes a screenshot of the whole viewer page for docs/viewer.md into the scratch
-folder. Exits 77 (ctest: skipped) with one line when Chromium is missing.
+Writes screenshots of the whole viewer pages of lessons 11 and 13 for docs/viewer.md
+into the scratch folder. Exits 77 (ctest: skipped) with one line when Chromium is missing.
 
     browser_test.py BIN_DIR WORK_DIR [--update]   (--update rewrites the reference)
 """
+import base64
+import json
+import re
 import shutil
+import struct
 import subprocess
 import sys
 import tempfile
@@ -35,6 +44,7 @@ LESSONS = {
                        "--speed-elements", "100"],
     "10_southwell": ["--elements", "60", "--resolution", "20", "--sweeps", "10"],
     "12_solver_showdown": ["--elements", "20", "--bandwidth-n", "100", "--skip-mesh-study"],
+    "13_hierarchical": ["--skip-studies", "--threshold", "1e-2", "--min-area", "3e-3"],
 }
 SHOT_FRAME = 12  # the frame of lesson 11's replay the reference shows
 
@@ -154,6 +164,62 @@ def curves_viewer(browser, out, lesson, drawn):
     no_errors(page, f"{lesson}'s viewer")
 
 
+def hierarchy_links(out):
+    """Per element, how many links its leaf and the leaf's ancestors receive, read
+    from lesson 13's viewer_data.js with Python's own base64 and struct."""
+    text = (out / "13_hierarchical" / "viewer_data.js").read_text()
+    data = json.loads(text[text.index("= ") + 2:text.rindex(";")])
+    h = data["hierarchy"]
+
+    def int32s(a):
+        return struct.unpack(f"<{a['count']}i", base64.b64decode(a["base64"]))
+
+    parent, receiver = int32s(h["nodes"]["parent"]), int32s(h["links"]["receiver"])
+    per_node = [0] * len(parent)
+    for r in receiver:
+        per_node[r] += 1
+    counts = []
+    for leaf in int32s(h["element_node"]):
+        count, n = 0, leaf
+        while n >= 0:
+            count, n = count + per_node[n], parent[n]
+        counts.append(count)
+    return counts
+
+
+def hierarchical_viewer(browser, out):
+    counts = hierarchy_links(out)
+    page = open_viewer(browser, out, "13_hierarchical")
+    links = "document.getElementById('links')"
+    check(not page.evaluate(f"{links}.hidden"), "13's viewer: no readout of links")
+    before = canvas_shot(page)
+    x, y, w, h = page.box("#mesh")
+    page.click(x + 0.62 * w, y + 0.3 * h)  # the back wall, above the short block
+    element = int(page.evaluate(f"{links}.dataset.element"))
+    if check(0 <= element < len(counts), f"13's viewer: a click on the back wall picked element {element}"):
+        shown = int(page.evaluate(f"{links}.dataset.links"))
+        check(shown == counts[element] > 0,
+              f"13's viewer: element {element} lists {shown} links, the data file has {counts[element]}")
+        check("on 'back wall'" in page.evaluate(f"{links}.textContent"),
+              f"13's viewer: a click on the back wall picked element {element}, not on the back wall")
+    picked = canvas_shot(page)
+    check(changed(before, picked), "13's viewer: picking a leaf drew no outlines")
+    (out / "viewer_13.png").write_bytes(page.screenshot())
+    known = max(range(len(counts)), key=lambda e: counts[e])  # the leaf with the most links
+    page.evaluate(f"GI.pickLeaf({known})")
+    shown = int(page.evaluate(f"{links}.dataset.links"))
+    check(shown == counts[known], f"13's viewer: element {known} lists {shown} links, the data file has {counts[known]}")
+    readout = page.evaluate(f"{links}.textContent")
+    off = re.search(r"differ by ([0-9.e+-]+)%", readout)
+    check(off and float(off.group(1)) < 0.01,
+          f"13's viewer: the links' sum does not match what the solver handed the leaf: '{readout}'")
+    with_links = canvas_shot(page)
+    page.evaluate("document.getElementById('outline').click()")
+    check(changed(with_links, canvas_shot(page)), "13's viewer: the leaf outlines did not change the canvas")
+    page.evaluate("document.getElementById('outline').click()")
+    no_errors(page, "13's viewer")
+
+
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
@@ -181,6 +247,7 @@ def main():
             curves_viewer(browser, out, "09_jacobi_gauss_seidel", 3)  # Jacobi, Gauss-Seidel, SOR
             curves_viewer(browser, out, "10_southwell", 3)  # Southwell, Jacobi, Gauss-Seidel
             curves_viewer(browser, out, "12_solver_showdown", 1)  # no replay: one final solution
+            hierarchical_viewer(browser, out)
         except ProtocolError as e:
             problems.append(f"the browser: {e}")
         finally:
@@ -189,7 +256,8 @@ def main():
         print(p)
     if problems:
         sys.exit(1)
-    print(f"browser test: every page loaded with no console error; screenshot {out / 'viewer_11.png'}")
+    print(f"browser test: every page loaded with no console error; screenshots {out / 'viewer_11.png'}, "
+          f"{out / 'viewer_13.png'}")
 
 
 if __name__ == "__main__":

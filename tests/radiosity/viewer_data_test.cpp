@@ -1,12 +1,15 @@
 // The viewer's data file (viewer_data.hpp): read back, it gives the values written
 // (as float32); the lessons' files stay within their stated size; bad data is
-// refused before a byte is written; relighting is linear in E.
+// refused before a byte is written; relighting is linear in E; a hierarchical run's
+// links, summed over a leaf and its ancestors, give what the solver gathers for it.
 #include "gi/radiosity/viewer_data.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <fstream>
+#include <functional>
+#include <iostream>
 
 #include "../support/files.hpp"
 #include "gi/core/atomic_file.hpp"
@@ -14,6 +17,7 @@
 #include "gi/radiosity/progressive.hpp"
 #include "gi/radiosity/solvers.hpp"
 #include "gi/radiosity/viewer_demos.hpp"
+#include "gi/radiosity/viewer_hierarchy.hpp"
 #include "gi/scene/json.hpp"
 
 using gi::Color;
@@ -276,4 +280,152 @@ TEST(ViewerData, LampsTheSceneLacksAreLeftOut) {
   ASSERT_EQ(d.lights.size(), 2u);
   EXPECT_EQ(d.lights[1].name, "short block top as a lamp");
   EXPECT_EQ(d.runs.at(0).frames.size(), 4u) << "B = E and three terms";
+}
+
+namespace {
+
+// A hierarchical run on the Cornell box, coarse enough for a unit test (all light by links).
+const gi::HierarchicalRun& hierarchical_box() {
+  static const gi::HierarchicalRun run = [] {
+    gi::HierarchicalSettings s;
+    s.refinement.threshold = 1e-2;
+    s.refinement.min_area = 1e-3;
+    return gi::run_hierarchical(gi::cornell_box(), s, 2);
+  }();
+  return run;
+}
+
+}  // namespace
+
+TEST(ViewerData, HierarchyReadsBackAsWritten) {
+  const gi::HierarchicalRun& run = hierarchical_box();
+  const gi::Hierarchy& h = run.hierarchy;
+  const gi::ViewerData d = gi::hierarchical_viewer_data("13_x", "t", run, gi::cornell_box().camera, 1.5);
+  ASSERT_TRUE(d.hierarchy);
+  const gi::JsonValue json = read_back(gi::viewer_data_text(d));
+  const gi::JsonValue& hierarchy = member(json, "hierarchy");
+  const gi::JsonValue& nodes = member(hierarchy, "nodes");
+  const std::vector<int> parent = ints(member(nodes, "parent")), level = ints(member(nodes, "level"));
+  ASSERT_EQ(parent.size(), h.nodes.size());
+  const std::vector<float> corners = floats(member(nodes, "corners"));
+  ASSERT_EQ(corners.size(), 12 * h.nodes.size());
+  for (std::size_t n = 0; n < h.nodes.size(); ++n) {
+    EXPECT_EQ(parent[n], h.nodes[n].parent);
+    EXPECT_EQ(level[n], h.nodes[n].level);
+    for (int c = 0; c < 4; ++c)
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(corners[12 * n + 3 * c + k], static_cast<float>(h.nodes[n].shape.corners[c][k]));
+  }
+  EXPECT_EQ(ints(member(nodes, "surface")), d.hierarchy->node_surface);
+  EXPECT_EQ(ints(member(hierarchy, "element_node")), gi::leaves(h)) << "the elements are the leaves, in order";
+  const gi::JsonValue& links = member(hierarchy, "links");
+  const std::vector<int> receiver = ints(member(links, "receiver")), source = ints(member(links, "source"));
+  const std::vector<float> F = floats(member(links, "F")), V = floats(member(links, "visibility"));
+  ASSERT_EQ(receiver.size(), gi::link_count(h));
+  std::size_t l = 0;
+  for (const gi::Node& node : h.nodes)
+    for (const gi::Link& link : node.links) {
+      EXPECT_EQ(receiver[l], link.receiver);
+      EXPECT_EQ(source[l], link.source);
+      EXPECT_EQ(F[l], static_cast<float>(link.F));
+      EXPECT_EQ(V[l], static_cast<float>(link.visibility));
+      ++l;
+    }
+  const gi::LeafMesh leaves = gi::leaf_mesh(h);
+  ASSERT_FALSE(leaves.t_vertices.empty()) << "a mesh with T-vertices, or the test below is empty";
+  const gi::JsonValue& t = member(hierarchy, "t_vertices");
+  const std::vector<int> vertex = ints(member(t, "vertex")), a = ints(member(t, "a"));
+  const std::vector<float> at = floats(member(t, "t"));
+  ASSERT_EQ(vertex.size(), leaves.t_vertices.size());
+  for (std::size_t i = 0; i < vertex.size(); ++i) {
+    EXPECT_EQ(vertex[i], leaves.t_vertices[i].vertex);
+    EXPECT_EQ(a[i], leaves.t_vertices[i].a);
+    EXPECT_EQ(at[i], static_cast<float>(leaves.t_vertices[i].t));
+  }
+  EXPECT_EQ(member(hierarchy, "links_carry").text, "all the light: B = E + what the links bring");
+  const gi::JsonValue& frames = member(member(json, "runs").items.at(0), "frames");
+  EXPECT_EQ(floats(member(frames, "B")).size(), 3 * leaves.node.size()) << "one frame: the answer on the leaves";
+}
+
+TEST(ViewerData, HierarchyRefusesBadIndices) {
+  const gi::HierarchicalRun& run = hierarchical_box();
+  const gi::ViewerData good = gi::hierarchical_viewer_data("13_x", "t", run, gi::cornell_box().camera, 1.5);
+  const auto refused = [&](const std::function<void(gi::ViewerHierarchy&)>& spoil, const std::string& why) {
+    gi::ViewerData d = good;
+    spoil(*d.hierarchy);
+    try {
+      gi::viewer_data_text(d);
+      ADD_FAILURE() << "accepted: " << why;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  };
+  const int nodes = static_cast<int>(good.hierarchy->node_parent.size());
+  refused([&](gi::ViewerHierarchy& h) { h.element_node[5] = nodes; }, "an element's node is out of range");
+  refused([](gi::ViewerHierarchy& h) { h.element_node.pop_back(); }, "element_node needs one node per element");
+  refused([&](gi::ViewerHierarchy& h) { h.links[7].source = nodes; }, "a link's receiver or source is not a node");
+  refused([](gi::ViewerHierarchy& h) { h.links[7].receiver = -1; }, "a link's receiver or source is not a node");
+  refused([&](gi::ViewerHierarchy& h) { h.node_parent[nodes - 1] = nodes - 1; }, "its parent is out of range");
+  refused([](gi::ViewerHierarchy& h) { h.node_surface[0] = 99; }, "its surface is out of range");
+  refused([](gi::ViewerHierarchy& h) { h.node_level.pop_back(); }, "one value per node");
+  refused([](gi::ViewerHierarchy& h) { h.links[0].visibility = 1.5; }, "visibility is outside [0, 1]");
+  refused([](gi::ViewerHierarchy& h) { h.links[0].light.y = NAN; }, "a link's light is not finite");
+  refused([](gi::ViewerHierarchy& h) { h.links[0].F = INFINITY; }, "a link's F is not finite");
+  refused([](gi::ViewerHierarchy& h) { h.element_gathered[2] = gi::Color(1e39); }, "element_gathered holds a value");
+  refused([&](gi::ViewerHierarchy& h) { h.t_vertices[0].b = static_cast<int>(good.vertices.size()); },
+          "a T-vertex names a vertex out of range");
+  refused([](gi::ViewerHierarchy& h) { h.node_corners[3][1].z = NAN; }, "a corner is not finite");
+}
+
+// What the page sums when a leaf is picked -- the light of the links of the leaf and
+// of its ancestors -- recomputed here from the file's own arrays (the parent chain,
+// the receivers), against the solver run on: one more gather and push-pull from the
+// B the file was written with hands every leaf B_new - E = rho * sum of those lights,
+// to float32 rounding. And, for every link from a leaf, light = F V B_source.
+TEST(ViewerData, ALeafsLinksAndItsAncestorsAddUpToWhatTheSolverGathers) {
+  const gi::HierarchicalRun& run = hierarchical_box();
+  const gi::ViewerData d = gi::hierarchical_viewer_data("13_x", "t", run, gi::cornell_box().camera, 1.5);
+  const gi::JsonValue json = read_back(gi::viewer_data_text(d));
+  const gi::JsonValue& hierarchy = member(json, "hierarchy");
+  const std::vector<int> parent = ints(member(member(hierarchy, "nodes"), "parent"));
+  const std::vector<int> element_node = ints(member(hierarchy, "element_node"));
+  const gi::JsonValue& links = member(hierarchy, "links");
+  const std::vector<int> receiver = ints(member(links, "receiver")), source = ints(member(links, "source"));
+  const std::vector<float> F = floats(member(links, "F")), V = floats(member(links, "visibility"));
+  const std::vector<float> light = floats(member(links, "light"));
+  const std::vector<float> handed = floats(member(hierarchy, "element_gathered"));
+  const std::vector<float> rho = floats(member(member(json, "mesh"), "reflectance"));
+
+  gi::Hierarchy next = run.hierarchy;
+  gi::SolverOptions one;
+  one.max_steps = 1;
+  gi::solve_links(next, one, 2);
+
+  std::vector<std::vector<int>> by_receiver(parent.size());
+  for (std::size_t l = 0; l < receiver.size(); ++l) by_receiver[receiver[l]].push_back(static_cast<int>(l));
+  double worst = 0, worst_handed = 0, largest = 0;
+  std::size_t leaf_sources = 0;
+  for (std::size_t e = 0; e < element_node.size(); ++e) {
+    Color sum(0.0);
+    for (int n = element_node[e]; n >= 0; n = parent[n])
+      for (int l : by_receiver[n]) sum += Color(light[3 * l], light[3 * l + 1], light[3 * l + 2]);
+    const gi::Node& leaf = next.nodes[element_node[e]];
+    const Color r(rho[3 * e], rho[3 * e + 1], rho[3 * e + 2]);
+    worst = std::max(worst, gi::max_component(glm::abs(r * sum - (leaf.B - leaf.E))));
+    worst_handed = std::max(worst_handed, gi::max_component(glm::abs(r * sum - Color(handed[3 * e], handed[3 * e + 1],
+                                                                                       handed[3 * e + 2]))));
+    largest = std::max(largest, gi::max_component(leaf.B - leaf.E));
+  }
+  ASSERT_GT(largest, 0);
+  EXPECT_LT(worst, 1e-5 * largest) << "the links of a leaf and its ancestors are all the light it gathers";
+  // The solver's own last gather used the B before its last step: within its tolerance.
+  EXPECT_LT(worst_handed, 1e-4 * largest) << "element_gathered is what the solver handed the leaf";
+  for (std::size_t l = 0; l < receiver.size(); ++l) {
+    const gi::Node& q = run.hierarchy.nodes[source[l]];
+    if (!q.leaf()) continue;
+    ++leaf_sources;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(light[3 * l + k], F[l] * V[l] * q.B[k], 1e-6 * gi::max_component(q.B) + 1e-30);
+  }
+  EXPECT_GT(leaf_sources, 0u);
+  std::cout << "hierarchy: " << element_node.size() << " leaves, " << receiver.size() << " links; worst |rho sum - gathered| "
+            << worst / largest << ", against element_gathered " << worst_handed / largest << " of the largest\n";
 }

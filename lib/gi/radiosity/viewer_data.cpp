@@ -146,6 +146,71 @@ json run_json(const ViewerRun& run, std::size_t n, int patches) {
 
 json vector_json(const vec3& v) { return json::array({v.x, v.y, v.z}); }
 
+bool index_in(int i, std::size_t size) { return i >= 0 && static_cast<std::size_t>(i) < size; }
+
+json nodes_json(const ViewerHierarchy& h, std::size_t surfaces) {
+  const std::size_t nodes = h.node_surface.size();
+  require(h.node_level.size() == nodes && h.node_parent.size() == nodes && h.node_corners.size() == nodes,
+          "hierarchy: surface, level, parent and corners need one value per node");
+  TypedArray surface("int32"), level("int32"), parent("int32"), corners("float32");
+  for (std::size_t n = 0; n < nodes; ++n) {
+    const std::string what = "hierarchy: node " + std::to_string(n);
+    require(index_in(h.node_surface[n], surfaces), what + ": its surface is out of range");
+    require(h.node_level[n] >= 0, what + ": its level is negative");
+    // Parents come first: a node is split before its children exist.
+    require(h.node_parent[n] == -1 || (h.node_parent[n] >= 0 && static_cast<std::size_t>(h.node_parent[n]) < n),
+            what + ": its parent is out of range");
+    surface.add_int(h.node_surface[n]), level.add_int(h.node_level[n]), parent.add_int(h.node_parent[n]);
+    for (const vec3& c : h.node_corners[n])
+      for (int k = 0; k < 3; ++k) {
+        require(finite_float(c[k]), what + ": a corner is not finite");
+        corners.add_float(c[k]);
+      }
+  }
+  return {{"surface", surface.finish()}, {"level", level.finish()}, {"parent", parent.finish()},
+          {"corners", corners.finish()}};
+}
+
+json links_json(const ViewerHierarchy& h) {
+  TypedArray receiver("int32"), source("int32"), F("float32"), visibility("float32"), light("float32");
+  for (const ViewerLink& l : h.links) {
+    require(index_in(l.receiver, h.node_surface.size()) && index_in(l.source, h.node_surface.size()),
+            "hierarchy: a link's receiver or source is not a node");
+    require(finite_float(l.F), "hierarchy: a link's F is not finite");
+    require(l.visibility >= 0 && l.visibility <= 1, "hierarchy: a link's visibility is outside [0, 1]");
+    receiver.add_int(l.receiver), source.add_int(l.source), F.add_float(l.F), visibility.add_float(l.visibility);
+    for (int k = 0; k < 3; ++k) {
+      require(finite_float(l.light[k]), "hierarchy: a link's light is not finite");
+      light.add_float(l.light[k]);
+    }
+  }
+  return {{"receiver", receiver.finish()}, {"source", source.finish()}, {"F", F.finish()},
+          {"visibility", visibility.finish()}, {"light", light.finish()}};
+}
+
+json hierarchy_json(const ViewerHierarchy& h, const ViewerData& d) {
+  const std::size_t n = d.elements.size();
+  require(h.element_node.size() == n, "hierarchy: element_node needs one node per element");
+  TypedArray element_node("int32"), a("int32"), b("int32"), vertex("int32"), t("float32");
+  for (int node : h.element_node) {
+    require(index_in(node, h.node_surface.size()), "hierarchy: an element's node is out of range");
+    element_node.add_int(node);
+  }
+  for (const ViewerTVertex& tv : h.t_vertices) {
+    require(index_in(tv.vertex, d.vertices.size()) && index_in(tv.a, d.vertices.size()) &&
+                index_in(tv.b, d.vertices.size()),
+            "hierarchy: a T-vertex names a vertex out of range");
+    require(tv.t >= 0 && tv.t <= 1, "hierarchy: a T-vertex's t is outside [0, 1]");
+    vertex.add_int(tv.vertex), a.add_int(tv.a), b.add_int(tv.b), t.add_float(tv.t);
+  }
+  return {{"links_carry", h.links_carry},
+          {"nodes", nodes_json(h, d.surfaces.size())},
+          {"element_node", element_node.finish()},
+          {"element_gathered", colours(h.element_gathered, n, "hierarchy: element_gathered")},
+          {"links", links_json(h)},
+          {"t_vertices", {{"vertex", vertex.finish()}, {"a", a.finish()}, {"b", b.finish()}, {"t", t.finish()}}}};
+}
+
 }  // namespace
 
 ViewerData viewer_data(const std::string& lesson, const std::string& title, const Mesh& mesh, const Camera& camera,
@@ -182,9 +247,10 @@ std::string viewer_data_text(const ViewerData& d) {
                        {"look_at", vector_json(d.camera.look_at)},
                        {"up", vector_json(d.camera.up)},
                        {"vertical_fov_degrees", d.camera.vertical_fov}};
-  const json data = {{"format", "gi-workbench viewer"}, {"version", 1},     {"lesson", d.lesson},
-                     {"title", d.title},                 {"exposure", d.exposure}, {"camera", camera},
-                     {"mesh", mesh_json(d)},             {"runs", std::move(runs)}, {"lights", std::move(lights)}};
+  json data = {{"format", "gi-workbench viewer"}, {"version", 1},     {"lesson", d.lesson},
+               {"title", d.title},                 {"exposure", d.exposure}, {"camera", camera},
+               {"mesh", mesh_json(d)},             {"runs", std::move(runs)}, {"lights", std::move(lights)}};
+  if (d.hierarchy) data["hierarchy"] = hierarchy_json(*d.hierarchy, d);
   // ASCII only, bytes that are not UTF-8 replaced: names cannot break the script.
   return "// The data viewer.html shows (format: lib/gi/radiosity/viewer_data.hpp).\nwindow.GI_VIEWER_DATA = " +
          data.dump(-1, ' ', true, json::error_handler_t::replace) + ";\n";

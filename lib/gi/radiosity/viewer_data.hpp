@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,9 +45,29 @@ namespace gi {
 //
 // A typed array is {"type": "float32" | "int32" | "uint32", "count": n, "base64":
 // ...}, its n values little-endian. Readers ignore keys they do not know, so a
-// later lesson can add its own: hierarchical radiosity will add "hierarchy" (its
-// nodes, the leaf node of each element, and links {receiver, source, F} as typed
-// arrays) without changing the version.
+// later lesson can add its own without changing the version, as hierarchical
+// radiosity (lesson 13) does:
+//
+//   hierarchy         (optional) the elements are the leaves of quadtrees of nodes
+//     links_carry     what the links' light is, in words (all light, or only what
+//                     has bounced when the direct light is exact)
+//     nodes           surface, level, parent int32 (-1: a root; a parent comes
+//                     before its children), 1 per node;
+//                     corners float32, 12 per node: its four corners in the order
+//                     of mesh.elements
+//     element_node    int32, 1 per element: the leaf node it is
+//     element_gathered  float32, 3 per element: what push-pull handed the leaf in
+//                     the solver's last step, rho times the light over the links
+//                     of the leaf and of all its ancestors
+//     links           receiver, source int32 (nodes), F, visibility float32, 1 per
+//                     link; light float32, 3 per link: the radiosity the link
+//                     brings its receiver before rho, F sum_c V_c B_c over the
+//                     source's quarters (push_pull.hpp's gather), B the nodes
+//                     hold after the solve (with exact direct light that is
+//                     B' = B - E, which the links carry: hierarchical_solver.hpp)
+//     t_vertices      vertex, a, b int32, t float32, 1 per T-vertex, coarsest
+//                     first: a smooth picture sets B_v = (1 - t) B_a + t B_b after
+//                     the area-weighted mean, so no crack opens (leaf_mesh.hpp)
 struct ViewerFrame {
   int step = 0;
   std::vector<Color> B;  // one per element
@@ -68,6 +89,26 @@ struct ViewerLight {
   std::vector<Color> emission, B;  // one per element
 };
 
+// The hierarchy of a hierarchical run, as the page shows it (viewer_hierarchy.hpp).
+struct ViewerLink {
+  int receiver = -1, source = -1;  // nodes
+  double F = 0, visibility = 0;
+  Color light{0.0};  // F sum_c V_c B_c: what it brings the receiver before rho
+};
+struct ViewerTVertex {
+  int vertex = -1, a = -1, b = -1;
+  double t = 0;
+};
+struct ViewerHierarchy {
+  std::string links_carry;
+  std::vector<int> node_surface, node_level, node_parent;
+  std::vector<std::array<vec3, 4>> node_corners;
+  std::vector<int> element_node;
+  std::vector<Color> element_gathered;
+  std::vector<ViewerLink> links;
+  std::vector<ViewerTVertex> t_vertices;
+};
+
 struct ViewerData {
   std::string lesson, title;
   double exposure = 1;
@@ -81,6 +122,7 @@ struct ViewerData {
   int patches = 0;
   std::vector<ViewerRun> runs;
   std::vector<ViewerLight> lights;
+  std::optional<ViewerHierarchy> hierarchy;
 };
 
 // The mesh part of the data, from a radiosity mesh.
@@ -89,7 +131,9 @@ ViewerData viewer_data(const std::string& lesson, const std::string& title, cons
 
 // The whole file's text. Throws std::invalid_argument naming the first problem: an
 // array of the wrong length, a corner or patch index out of range, a value that is
-// not finite in the mesh, a frame or a light (float32 included: |x| > 3.4e38).
+// not finite in the mesh, a frame or a light (float32 included: |x| > 3.4e38); in
+// the hierarchy, a node, element, vertex or parent index out of range, a visibility
+// outside [0, 1] or a value that is not finite.
 // History values may be NaN or infinite (a diverging solver); the page skips them.
 std::string viewer_data_text(const ViewerData& data);
 
