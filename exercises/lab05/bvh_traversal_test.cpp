@@ -51,6 +51,13 @@ gi::World stack_of_squares() {
   return world_of(quads, one_per_leaf);
 }
 
+// A ray from a random point inside quad_room, in a random direction (uniform on the sphere).
+Ray ray_in_the_room(gi::Rng& rng) {
+  const double z = 2 * rng.uniform() - 1, phi = 2 * gi::pi * rng.uniform(), s = std::sqrt(1 - z * z);
+  return Ray{{9.6 * rng.uniform() - 4.8, 0.1 + 3.3 * rng.uniform(), 9.6 * rng.uniform() - 4.8},
+             {s * std::cos(phi), s * std::sin(phi), z}};
+}
+
 }  // namespace
 
 TEST(Ex5_2_BvhTraversal, FindsTheQuadInFrontAndMissesWhenNothingIsThere) {
@@ -186,9 +193,7 @@ TEST(Ex5_2_BvhTraversal, AgreesWithBruteForceOnRandomRays) {
   const gi::World bvh = gi::make_world(room, gi::Acceleration::Bvh);
   gi::Rng rng(2024);
   for (int i = 0; i < 2000; ++i) {
-    const double z = 2 * rng.uniform() - 1, phi = 2 * gi::pi * rng.uniform(), s = std::sqrt(1 - z * z);
-    const Ray ray{{9.6 * rng.uniform() - 4.8, 0.1 + 3.3 * rng.uniform(), 9.6 * rng.uniform() - 4.8},
-                  {s * std::cos(phi), s * std::sin(phi), z}};
+    const Ray ray = ray_in_the_room(rng);
     const auto expected = gi::closest_hit(brute, ray);
     const auto hit = gi::closest_hit(bvh, ray);
     ASSERT_TRUE(expected) << "ray " << i << " starts inside a closed room: testing every quad finds a hit";
@@ -209,9 +214,7 @@ TEST(Ex5_2_BvhTraversal, ARayCutAtItsHitKeepsIt) {
   const gi::World bvh = gi::make_world(room, gi::Acceleration::Bvh);
   gi::Rng rng(2025);
   for (int i = 0; i < 4000; ++i) {
-    const double z = 2 * rng.uniform() - 1, phi = 2 * gi::pi * rng.uniform(), s = std::sqrt(1 - z * z);
-    Ray ray{{9.6 * rng.uniform() - 4.8, 0.1 + 3.3 * rng.uniform(), 9.6 * rng.uniform() - 4.8},
-            {s * std::cos(phi), s * std::sin(phi), z}};
+    Ray ray = ray_in_the_room(rng);
     const auto expected = gi::closest_hit(brute, ray);
     ASSERT_TRUE(expected) << "ray " << i << " starts inside a closed room: testing every quad finds a hit";
     ray.t_max = expected->t;
