@@ -51,6 +51,13 @@ gi::World stack_of_squares() {
   return world_of(quads, one_per_leaf);
 }
 
+// A ray from a random point inside quad_room, in a random direction (uniform on the sphere).
+Ray ray_in_the_room(gi::Rng& rng) {
+  const double z = 2 * rng.uniform() - 1, phi = 2 * gi::pi * rng.uniform(), s = std::sqrt(1 - z * z);
+  return Ray{{9.6 * rng.uniform() - 4.8, 0.1 + 3.3 * rng.uniform(), 9.6 * rng.uniform() - 4.8},
+             {s * std::cos(phi), s * std::sin(phi), z}};
+}
+
 }  // namespace
 
 TEST(Ex5_2_BvhTraversal, FindsTheQuadInFrontAndMissesWhenNothingIsThere) {
@@ -186,9 +193,7 @@ TEST(Ex5_2_BvhTraversal, AgreesWithBruteForceOnRandomRays) {
   const gi::World bvh = gi::make_world(room, gi::Acceleration::Bvh);
   gi::Rng rng(2024);
   for (int i = 0; i < 2000; ++i) {
-    const double z = 2 * rng.uniform() - 1, phi = 2 * gi::pi * rng.uniform(), s = std::sqrt(1 - z * z);
-    const Ray ray{{9.6 * rng.uniform() - 4.8, 0.1 + 3.3 * rng.uniform(), 9.6 * rng.uniform() - 4.8},
-                  {s * std::cos(phi), s * std::sin(phi), z}};
+    const Ray ray = ray_in_the_room(rng);
     const auto expected = gi::closest_hit(brute, ray);
     const auto hit = gi::closest_hit(bvh, ray);
     ASSERT_TRUE(expected) << "ray " << i << " starts inside a closed room: testing every quad finds a hit";
@@ -197,5 +202,26 @@ TEST(Ex5_2_BvhTraversal, AgreesWithBruteForceOnRandomRays) {
     ASSERT_NEAR(hit->t, expected->t, 1e-9 * expected->t)
         << "ray " << i << ": the BVH found a hit at t = " << hit->t << ", testing every quad finds t = "
         << expected->t << (hit->t > expected->t ? ": not the nearest" : ": nearer than any quad?");
+  }
+}
+
+TEST(Ex5_2_BvhTraversal, ARayCutAtItsHitKeepsIt) {
+  NEEDS_SLAB_TEST(4);
+  // Shadow rays to points on the room's walls: each ends exactly at the hit that testing
+  // every quad finds, and closest_hit must still return it.
+  const gi::Scene room = gi::quad_room(1500);
+  const gi::World brute = gi::make_world(room, gi::Acceleration::BruteForce);
+  const gi::World bvh = gi::make_world(room, gi::Acceleration::Bvh);
+  gi::Rng rng(2025);
+  for (int i = 0; i < 4000; ++i) {
+    Ray ray = ray_in_the_room(rng);
+    const auto expected = gi::closest_hit(brute, ray);
+    ASSERT_TRUE(expected) << "ray " << i << " starts inside a closed room: testing every quad finds a hit";
+    ray.t_max = expected->t;
+    const auto hit = gi::closest_hit(bvh, ray);
+    ASSERT_TRUE(hit) << "ray " << i << " ends exactly at its hit, t_max = t = " << ray.t_max
+                     << ", and lost it. Your slab test lets in a box the ray enters a hair past t_max (box_reach); "
+                        "skip a box taken off the stack only when its t_enter is beyond ray.t_max * box_reach too";
+    ASSERT_EQ(hit->t, expected->t) << "ray " << i << ": the same hit, to the bit";
   }
 }

@@ -7,13 +7,15 @@
 
 #include "gi/core/ray.hpp"
 #include "gi/geometry/aabb.hpp"
+#include "gi/geometry/quad.hpp"
 
 namespace lab05 {
 
 // What the traversal needs of exercise 5.1, as a message ("" when all is well).
 // `level`: 0 rays along +z into a box ahead; 1 also the distance where the ray enters
 // (by which children are ordered and skipped); 2 also rays with negative components;
-// 3 also flat boxes (those of axis-aligned quads).
+// 3 also flat boxes (those of axis-aligned quads); 4 also a ray cut exactly at its hit
+// on a flat box's quad (t_max = the quad's t), which must enter that box.
 inline std::string slab_test_problem(int level) {
   const gi::Aabb box{{1, 1, 1}, {3, 2, 4}};
   const auto slab = [](const gi::Ray& r, const gi::Aabb& b) { return gi::slab_test(r, 1.0 / r.direction, b); };
@@ -28,6 +30,14 @@ inline std::string slab_test_problem(int level) {
     return "your slab test misses a box ahead of a ray going towards -z" + fix;
   if (level >= 3 && !slab(gi::Ray{{1, 3, 1}, {0, -1, 0}}, gi::Aabb{{0, 0, 0}, {2, 0, 2}}))
     return "your slab test misses a flat box (the box of an axis-aligned quad)" + fix;
+  if (level >= 4) {
+    const gi::Quad square{{-1, -1, 3}, {2, 0, 0}, {0, 2, 0}, 0};
+    for (int i = 1; i <= 30; ++i) {
+      gi::Ray ray{{0, 0, 0}, gi::normalize(gi::vec3(0.01 * i, 0.08, 1))};
+      ray.t_max = gi::intersect(ray, square)->t;
+      if (!slab(ray, gi::bounds(square))) return "your slab test misses a box where the ray ends exactly at its hit" + fix;
+    }
+  }
   return "";
 }
 

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "gi/geometry/aabb.hpp"
+#include "gi/geometry/quad.hpp"
 #include "support/print.hpp"
 
 using gi::Aabb;
@@ -55,7 +56,8 @@ TEST(Ex5_1_SlabTest, BoxBehindTheRayMisses) {
 
 TEST(Ex5_1_SlabTest, RespectsTMax) {
   EXPECT_FALSE(slab(Ray{{2, 1.5, -3}, {0, 0, 1}, 0, 3.5}))
-      << "the box starts at t = 4, beyond t_max = 3.5 (a nearer hit is already known): start t_exit at ray.t_max";
+      << "the box starts at t = 4, beyond t_max = 3.5 (a nearer hit is already known): start t_exit at ray.t_max "
+         "(times box_reach)";
   const auto t = slab(Ray{{2, 1.5, -3}, {0, 0, 1}, 0, 4.5});
   ASSERT_TRUE(t) << "t_max = 4.5 reaches into the box, which starts at t = 4";
   EXPECT_NEAR(*t, 4.0, 1e-12) << "the ray enters the box at t = 4";
@@ -108,4 +110,20 @@ TEST(Ex5_1_SlabTest, AllThreeSlabsAtOnce) {
       << "the ray passes outside the box's corner (3, 1): it leaves the x slab before it enters the y slab. The "
          "box is where all three slabs' intervals overlap: the largest entry and the smallest exit, and a miss "
          "when the entry comes after the exit";
+}
+
+TEST(Ex5_1_SlabTest, ARayCutAtItsHitStillEntersTheBox) {
+  // A shadow ray to a point on a surface ends exactly there: t_max = the quad's own t.
+  // The flat box of the square z = 3 must let it in, although its crossing
+  // (3 - 0) * inv_dir.z rounds to just past that t for about one ray in six of these.
+  const gi::Quad square{{-1, -1, 3}, {2, 0, 0}, {0, 2, 0}, 0};
+  for (int i = 1; i <= 30; ++i)
+    for (int j = 1; j <= 30; ++j) {
+      Ray ray{{0, 0, 0}, gi::normalize(vec3(0.01 * i, 0.01 * j, 1))};
+      ray.t_max = gi::intersect(ray, square)->t;
+      ASSERT_TRUE(slab(ray, gi::bounds(square)))
+          << "the ray from the origin towards (" << i << "/100, " << j << "/100, 1) ends exactly at its hit on "
+          << "the square z = 3, t = " << ray.t_max << ": start t_exit at ray.t_max * box_reach (aabb.hpp), a hair "
+          << "further, since the box's crossing is rounded differently from the quad's t and can land just past it";
+    }
 }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <string>
 #include <thread>
@@ -95,8 +96,24 @@ void spheres_table(int max_spheres, int width, int height, gi::Lesson& lesson) {
                "time_vs_n");
 }
 
+// The rays of the Embree comparison (05_embree_bench, which casts 262 144 of each kind),
+// so the figures compare: camera rays on a square image of about `count` pixels, as
+// many from random points in random directions, and those cut to 4 m for any hits,
+// like shadow rays.
+struct RoomRays {
+  std::vector<gi::Ray> camera, random, shadow;
+};
+RoomRays room_rays(const gi::Scene& room, int count, std::uint64_t seed) {
+  gi::Rng rng(seed);
+  const int side = static_cast<int>(std::sqrt(static_cast<double>(count)));
+  RoomRays rays{gi::camera_rays(room, side, side), gi::random_rays(gi::quad_room_interior(), count, rng), {}};
+  rays.shadow = rays.random;
+  for (gi::Ray& ray : rays.shadow) ray.t_max = 4.0;
+  return rays;
+}
+
 // 2. The BVH on a room of quads, coherent and incoherent rays, one thread.
-void quad_room_table(int quads, gi::Lesson& lesson) {
+void quad_room_table(int quads, int rays_per_kind, gi::Lesson& lesson) {
   const gi::Timer build;
   const gi::World world = gi::make_world(gi::quad_room(quads));
   const double build_ms = build.milliseconds();
@@ -105,18 +122,12 @@ void quad_room_table(int quads, gi::Lesson& lesson) {
                       gi::format_number(build_ms, 0, gi::Format::Fixed) + " ms, " + std::to_string(stats.nodes) +
                       " nodes, depth " + std::to_string(stats.depth),
                   {{"rays"}, {"query"}, {"count"}, {"ms", 1}, {"Mrays/s", 2}, {"nodes/ray", 1}, {"quad tests/ray", 1}});
-  // The rays of the Embree comparison (05_embree_bench), so the figures compare:
-  // any-hit rays are the random ones cut to 4 m, like shadow rays.
-  gi::Rng rng(lesson.seed());
-  const std::vector<gi::Ray> coherent = gi::camera_rays(world.scene, 512, 512);
-  const std::vector<gi::Ray> incoherent = gi::random_rays(gi::quad_room_interior(), 512 * 512, rng);
-  std::vector<gi::Ray> shadow = incoherent;
-  for (gi::Ray& ray : shadow) ray.t_max = 4.0;
+  const RoomRays rays = room_rays(world.scene, rays_per_kind, lesson.seed());
   const struct {
     const char* name;
     const std::vector<gi::Ray>& rays;
     bool nearest;
-  } runs[] = {{"camera", coherent, true}, {"random", incoherent, true}, {"random, 4 m", shadow, false}};
+  } runs[] = {{"camera", rays.camera, true}, {"random", rays.random, true}, {"random, 4 m", rays.shadow, false}};
   for (const auto& run : runs) {
     const Cast c = cast(world, run.rays, run.nearest, 5);
     const double per = 1.0 / run.rays.size();
@@ -158,12 +169,7 @@ void changes_table(int quads, int rays_per_kind, gi::Lesson& lesson) {
     std::erase_if(changes, [](const Change& c) { return c.walk == gi::Acceleration::FastBvh; });
     lesson.say("(the fast walk is not in this student kit: its rows are left out)");
   }
-  gi::Rng rng(lesson.seed());
-  const int side = static_cast<int>(std::sqrt(static_cast<double>(rays_per_kind)));
-  const std::vector<gi::Ray> camera = gi::camera_rays(scene, side, side);
-  const std::vector<gi::Ray> random = gi::random_rays(gi::quad_room_interior(), rays_per_kind, rng);
-  std::vector<gi::Ray> shadow = random;
-  for (gi::Ray& ray : shadow) ray.t_max = 4.0;
+  const auto [camera, random, shadow] = room_rays(scene, rays_per_kind, lesson.seed());
 
   std::vector<gi::World> worlds;
   std::vector<double> build_ms;
@@ -253,18 +259,19 @@ void threads_table(double scale, gi::Lesson& lesson) {
 int main(int argc, char** argv) {
   gi::Lesson lesson("05_acceleration", "Bounding volumes and threads: brute force, a box per object and a BVH "
                                        "on 10 to 100 000 spheres; a room of quads; speedup per thread.");
-  int width = 160, height = 120, max_spheres = 100000, room_quads = 100000, change_rays = 16384;
+  int width = 160, height = 120, max_spheres = 100000, room_quads = 100000, room_rays = 65536, change_rays = 8192;
   double picture_scale = 0.5;  // 1: the lessons' own sizes (docs/05 says which figures are which)
   lesson.add_image_size(width, height, "eye-ray image (spheres table)");
   lesson.options()
       .add("--max-spheres", max_spheres, "largest sphere count (powers of 10 from 10)", 10, 1000000)
       .add("--room-quads", room_quads, "quads in the room (about)", 100, 2000000)
+      .add("--room-rays", room_rays, "rays of each kind in the room table (05_embree_bench: 262144)", 16, 4000000)
       .add("--change-rays", change_rays, "rays of each kind in the table of changes", 16, 4000000)
       .add("--picture-scale", picture_scale, "scales the pictures of the threads table", 0.05, 4.0);
   return lesson.run(argc, argv, [&] {
     spheres_table(max_spheres, width, height, lesson);
     std::cout << '\n';
-    quad_room_table(room_quads, lesson);
+    quad_room_table(room_quads, room_rays, lesson);
     std::cout << '\n';
     changes_table(room_quads, change_rays, lesson);
     std::cout << '\n';

@@ -139,6 +139,24 @@ TEST(SlabTest, BoxBehindTheRayOrBeyondTMaxMisses) {
   EXPECT_EQ(*touching, 2.0);
 }
 
+TEST(SlabTest, ARayCutAtAQuadsHitEntersItsFlatBox) {
+  // Rays from the origin to the square z = 3, each ending exactly at its hit. The box's
+  // crossing 3 * (1 / d.z) is rounded otherwise than the quad's t: for some of these
+  // rays it lands past t_max, and only box_reach keeps the box (and the hit) in.
+  const gi::Quad square{{-1, -1, 3}, {2, 0, 0}, {0, 2, 0}, 0};
+  int past = 0;
+  for (int i = 1; i <= 30; ++i)
+    for (int j = 1; j <= 30; ++j) {
+      Ray ray{{0, 0, 0}, gi::normalize(vec3(0.01 * i, 0.01 * j, 1))};
+      ray.t_max = gi::intersect(ray, square)->t;
+      past += 3 * (1 / ray.direction.z) > ray.t_max;
+      EXPECT_TRUE(slab(ray, gi::bounds(square))) << i << ", " << j;
+    }
+  EXPECT_GT(past, 30) << "the crossing should round past t_max for some rays, or this tests nothing";
+  // A box a millionth beyond t_max stays out: the reach is a rounding's, not a distance.
+  EXPECT_FALSE(slab(Ray{{0.5, 0.5, 3}, {0, 0, -1}, 0, 2 - 1e-6}, unit));
+}
+
 TEST(SlabTest, FlatBoxesAndGrazingRays) {
   const Aabb flat{{0, 0, 3}, {1, 1, 3}};
   const auto through = slab(Ray{{0.5, 0.5, 0}, {0, 0, 1}}, flat);

@@ -60,17 +60,21 @@ void expect_same_hits(const gi::Scene& scene, const std::vector<Ray>& rays, int 
     EXPECT_EQ(fast_hit->object, plain_hit->object) << "ray " << i;
     EXPECT_EQ(fast_hit->point, plain_hit->point) << "ray " << i;
     EXPECT_EQ(b.t_max, a.t_max) << "ray " << i << ": both leave t_max at the hit";
-    // The ray cut exactly at its hit, as a shadow ray to a point on that surface: the
-    // float walk rounds t_max, and must not cut the box holding the hit short. (The
-    // lab walk often loses these: its box crossing, by other arithmetic than the
-    // quad's, can round to just past t_max. The padded float boxes must not.)
-    Ray cut = rays[i];
-    cut.t_max = plain_hit->t;
+    // The ray cut exactly at its hit, as a shadow ray to a point on that surface: both
+    // walks keep it (the box crossing, by other arithmetic than the quad's, can round
+    // to just past t_max: the lab walk's box_reach and the float walk's padded boxes
+    // must let that box in).
+    Ray cut = rays[i], cut_plain = rays[i];
+    cut.t_max = cut_plain.t_max = plain_hit->t;
     const auto cut_hit = gi::closest_hit(fast, scene, cut);
+    const auto cut_plain_hit = gi::closest_hit(bvh, scene, cut_plain, counts);
     ASSERT_TRUE(cut_hit) << "ray " << i << " cut at its hit lost it";
+    ASSERT_TRUE(cut_plain_hit) << "ray " << i << " cut at its hit lost it in the lab walk";
     EXPECT_EQ(cut_hit->t, plain_hit->t) << "ray " << i;
-    EXPECT_EQ(cut_hit->object, plain_hit->object) << "ray " << i;
+    EXPECT_EQ(cut_plain_hit->t, plain_hit->t) << "ray " << i;
+    EXPECT_EQ(cut_hit->object, cut_plain_hit->object) << "ray " << i;
     EXPECT_TRUE(gi::any_hit(fast, scene, cut)) << "ray " << i;
+    EXPECT_TRUE(gi::any_hit(bvh, scene, cut, counts)) << "ray " << i;
   }
   EXPECT_GE(hits, min_hits) << "the rays should hit things";
 }

@@ -97,14 +97,20 @@ struct FloatRay {
   float4 t_min;     // the ray's extent, rounded outwards
 };
 
-// x in float, rounded down or up where the conversion rounded the other way.
-float float_down(double x) {
+// x in float, rounded down or up where the conversion rounded the other way. The
+// neighbouring float is the next bit pattern, towards zero or away from it: the
+// library's nextafter is a call, made at half the hits, and the call made the walk
+// save its vector registers around it. (f is never -0 where rounded up, nor +0 where
+// rounded down: a conversion keeps the sign of x.)
+inline float float_down(double x) {
   const auto f = static_cast<float>(x);
-  return f > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return f > x ? std::bit_cast<float>(f > 0 ? bits - 1 : bits + 1) : f;
 }
-float float_up(double x) {
+inline float float_up(double x) {
   const auto f = static_cast<float>(x);
-  return f < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return f < x ? std::bit_cast<float>(f < 0 ? bits - 1 : bits + 1) : f;
 }
 
 FloatRay float_ray(const Ray& ray, float reach) {

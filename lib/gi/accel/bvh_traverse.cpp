@@ -60,7 +60,7 @@ namespace gi {
       }
     }
     if (next < 0) {  // a leaf, or both boxes missed: back to the nearest box still worth a visit
-      while (size > 0 && stack[size - 1].t_enter > ray.t_max) --size;
+      while (size > 0 && stack[size - 1].t_enter > ray.t_max * box_reach) --size;  // as far as slab_test reaches
       if (size == 0) return nearest;
       next = stack[--size].node;
     }

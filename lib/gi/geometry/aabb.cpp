@@ -63,7 +63,7 @@ Aabb bounds(const Quad& quad) {
 std::optional<double> slab_test(const Ray& ray, const vec3& inv_dir, const Aabb& box) {
   // BEGIN EXERCISE 5.1 ray-box slab test
   double t_enter = ray.t_min;
-  double t_exit = ray.t_max;
+  double t_exit = ray.t_max * box_reach;  // a hair past t_max: rounding must not cut off a hit at t_max
   for (int axis = 0; axis < 3; ++axis) {
     double t_near = (box.lo[axis] - ray.origin[axis]) * inv_dir[axis];
     double t_far = (box.hi[axis] - ray.origin[axis]) * inv_dir[axis];
