@@ -225,6 +225,13 @@ TEST(Hierarchical, ReportsEveryRoundAndSettles) {
   EXPECT_EQ(r.rounds.back().links, gi::link_count(h));
   EXPECT_EQ(r.solution.B.size(), gi::leaves(h).size());
   for (std::size_t k = 1; k < r.rounds.size(); ++k) EXPECT_GE(r.rounds[k].leaves, r.rounds[k - 1].leaves);
+  // The history numbers every iteration of every round's solve once, 1, 2, 3, ...: the
+  // count a chart's axis and the page's "converged after" read.
+  int iterations = 0;
+  for (const gi::RefinementRound& round : r.rounds) iterations += round.iterations;
+  ASSERT_EQ(r.solution.history.size(), static_cast<std::size_t>(iterations));
+  for (std::size_t k = 0; k < r.solution.history.size(); ++k)
+    EXPECT_EQ(r.solution.history[k].step, static_cast<int>(k) + 1) << "entry " << k;
 }
 
 TEST(Hierarchical, BadSettingsAreRefusedByName) {

@@ -173,8 +173,9 @@ HierarchicalResult solve_hierarchical(Hierarchy& h, const FormFactorScene& block
     const double start = clock.seconds();
     SolverResult solve = solve_links(h, options, threads);
     row.solve_seconds = solve.history.back().seconds;
+    const int before_this = all.history.empty() ? 0 : all.history.back().step;
     for (SolverStep step : solve.history) {  // numbered on, timed from the start
-      step.step += all.history.empty() ? 0 : all.history.back().step;
+      step.step += before_this;
       step.seconds += start;
       all.history.push_back(step);
     }
