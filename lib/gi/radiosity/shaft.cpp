@@ -32,27 +32,28 @@ Shaft::Shaft(const FormFactorScene& scene, const std::vector<vec3>& ends) : scen
   if (bvh.nodes.empty() || ends.empty()) return;
   Aabb box;
   for (const vec3& p : ends) grow(box, p);
-  const Aabb& whole = gi::box(bvh.nodes[0]);
-  const double size = length(whole.hi - whole.lo) + length(box.hi) + length(box.lo);
-  box.lo -= vec3(1e-9 * size), box.hi += vec3(1e-9 * size);  // a triangle touching it within round-off counts
+  const Aabb whole = gi::box(bvh.nodes[0]);
+  const double scale = length(whole.hi - whole.lo) + length(box.hi) + length(box.lo);
+  box.lo -= vec3(1e-9 * scale), box.hi += vec3(1e-9 * scale);  // a triangle touching it within round-off counts
   // Down the tree, into every node whose box meets the shaft's (the nodes' float boxes
-  // are rounded outwards: never too small).
+  // are rounded outwards: never too small). Two pushed and one popped a level: the
+  // stack holds at most the tree's depth plus one.
   int stack[bvh_stack_size];
-  int size_now = 0;
-  stack[size_now++] = 0;
-  while (size_now > 0) {
-    const int at = stack[--size_now];
+  int pending = 0;
+  stack[pending++] = 0;
+  while (pending > 0) {
+    const int at = stack[--pending];
     const BvhNode& node = bvh.nodes[static_cast<std::size_t>(at)];
     if (!overlap(gi::box(node), box)) continue;
     if (node.count == 0) {
-      stack[size_now++] = node.offset;  // the right child
-      stack[size_now++] = at + 1;       // the left child, next in the array
+      stack[pending++] = node.offset;  // the right child
+      stack[pending++] = at + 1;       // the left child, next in the array
       continue;
     }
     for (int i = node.offset; i < node.offset + node.count; ++i) {
       const int k = bvh.refs[static_cast<std::size_t>(i)].index;  // the world holds triangles only
       const Triangle& t = world.scene.triangles[static_cast<std::size_t>(k)];
-      if (overlap(bounds(t), box) && crossed(t, ends, 1e-12 * size)) triangles_.push_back(k);
+      if (overlap(bounds(t), box) && crossed(t, ends, 1e-12 * scale)) triangles_.push_back(k);
     }
   }
 }

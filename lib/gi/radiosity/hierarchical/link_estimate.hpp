@@ -16,8 +16,9 @@ bool can_exchange(const Polygon& p, const Polygon& q);
 //           integral, form_factor_formulas.hpp) averaged over `order` x `order`
 //           Gauss-Legendre points of the receiver (order 1 is its centre, as in
 //           Hanrahan et al.); nothing in between
-//   F_min, F_max  the least and greatest F over those points and p's four corners
-//           (set in by corner_inset): how F changes across p
+//   F_min, F_max  the least and greatest F over those points, p's four corners and
+//           the points of p nearest q's corners and centre (set in by corner_inset):
+//           how F changes across p
 //   F_back  F_qp = F_pq A_p / A_q, by reciprocity
 //   V       link_visibility with `rays_per_side`^2 shadow rays from `seed` (visibility.hpp)
 // The light it carries is F V: exact where F is constant over the receiver and V is
