@@ -6,6 +6,7 @@
 
 #include "gi/core/parallel.hpp"
 #include "gi/core/timer.hpp"
+#include "gi/radiosity/hierarchical/exposure.hpp"
 #include "gi/radiosity/hierarchical/push_pull.hpp"
 
 namespace gi {
@@ -46,6 +47,28 @@ std::vector<Color> radiosity_of(const Hierarchy& h, const std::vector<int>& leaf
   return B;
 }
 
+// D of a leaf's open part (exposure.hpp). A leaf at a block's foot sends on the light
+// of its open part only (push-pull's B is the open part's), and a mean over its buried
+// part as well handed the block's faces a dark floor at their feet (docs/13). So a leaf
+// not wholly open is lit cell by open cell, each cell's D weighted by its area.
+Color open_direct_light(const Hierarchy& h, const Node& node, const DirectLighting& lights,
+                        const FormFactorScene& blockers, int points) {
+  if (node.open == 0xFFFF || node.open == 0) return direct_radiosity(lights, blockers, node.shape, node.rho, points);
+  constexpr double side = 1.0 / exposure_cells;
+  Color sum(0.0);
+  double area = 0;
+  for (int v = 0; v < exposure_cells; ++v)
+    for (int u = 0; u < exposure_cells; ++u) {
+      if (!((node.open >> (exposure_cells * v + u)) & 1)) continue;
+      const double s0 = u * side, s1 = s0 + side, t0 = v * side, t1 = t0 + side;
+      const Polygon cell = make_polygon({node_point(h, node, s0, t0), node_point(h, node, s1, t0),
+                                         node_point(h, node, s1, t1), node_point(h, node, s0, t1)});
+      sum += cell.area * direct_radiosity(lights, blockers, cell, node.rho, points);
+      area += cell.area;
+    }
+  return sum / area;
+}
+
 // exact_direct: every leaf's emission becomes its direct light D (the source term of
 // the indirect system); a leaf keeps its D once computed (`known`, by node).
 void set_direct_light(Hierarchy& h, const DirectLighting& lights, const FormFactorScene& blockers,
@@ -54,7 +77,7 @@ void set_direct_light(Hierarchy& h, const DirectLighting& lights, const FormFact
   known.resize(h.nodes.size(), 0);
   parallel_for(static_cast<int>(leaf.size()), settings.threads, [&](int k) {
     Node& node = h.nodes[leaf[k]];
-    if (!known[leaf[k]]) node.E = direct_radiosity(lights, blockers, node.shape, node.rho, settings.receiver_points);
+    if (!known[leaf[k]]) node.E = open_direct_light(h, node, lights, blockers, settings.receiver_points);
   });
   for (int n : leaf) known[n] = 1;
   // BF-refinement's scale is the largest emission of the system solved: here D's.
