@@ -4,8 +4,9 @@
 // and scoring included), as lesson 12's table cannot. Not a lesson. For example, the
 // recipe lesson 12 finds nearest 2% at the lowest cost:
 //   12_cornell_bench --elements 2000 --ff monte-carlo --direct per-pixel
-// or lesson 13's hierarchical radiosity, which needs no --elements:
-//   12_cornell_bench --solver hierarchical --threshold 1e-3 --min-area 3e-4
+// or lesson 13's hierarchical radiosity, which needs no --elements (its picture gathers
+// what bounced over the links at the end, link_gather.hpp):
+//   12_cornell_bench --solver hierarchical --threshold 1e-3 --min-area 3e-4 --order 2
 // prints one line: the recipe, elements, seconds from the quads to the picture, and the
 // relative RMS error over lesson 12's interior 8 x 8 blocks (percent).
 #include <string>
@@ -39,7 +40,9 @@ int main(int argc, char** argv) {
                                "--elements, --ff, --rays and --resolution unused)", {"gauss-seidel", "hierarchical"})
       .add("--threshold", recipe.hierarchical.refinement.threshold, "hierarchical: BF_eps", 1e-6, 1.0)
       .add("--min-area", recipe.hierarchical.refinement.min_area, "hierarchical: the smallest node's share of the "
-                                                                   "scene's area", 1e-7, 0.1);
+                                                                   "scene's area", 1e-7, 0.1)
+      .add("--order", recipe.hierarchical.refinement.order, "hierarchical: Gauss points a side of each link's F "
+                                                             "(2 is enough where the picture gathers at the end)", 2, 4);
   return lesson.run(argc, argv, [&] {
     const gi::RadiosityScene scene = gi::cornell_box();
     const int size = 256;
@@ -68,7 +71,8 @@ int main(int argc, char** argv) {
     const std::string setting =
         recipe.solver == gi::RecipeSolver::Hierarchical
             ? "BF_eps " + gi::format_number(recipe.hierarchical.refinement.threshold, 0, gi::Format::Scientific) +
-                  ", min area " + gi::format_number(recipe.hierarchical.refinement.min_area, 0, gi::Format::Scientific)
+                  ", min area " + gi::format_number(recipe.hierarchical.refinement.min_area, 0, gi::Format::Scientific) +
+                  ", order " + std::to_string(recipe.hierarchical.refinement.order)
         : recipe.form_factors.method == gi::FormFactorMethod::MonteCarlo
             ? std::to_string(recipe.form_factors.rays) + " rays"
             : "resolution " + std::to_string(r.form_factors.hemicube_resolution);

@@ -16,6 +16,7 @@
 #include "gi/pathtrace/reference.hpp"
 #include "gi/radiosity/direct_display.hpp"
 #include "gi/radiosity/hierarchical/hierarchical_run.hpp"
+#include "gi/radiosity/hierarchical/link_gather.hpp"
 #include "gi/radiosity/picture_error.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/vertex_colours.hpp"
@@ -46,8 +47,10 @@ struct Setup {
 
 // How a hierarchical solution is shown: all its light on the leaves (Gouraud, no
 // cracks), or lesson 12's split -- the exact direct light at every eye ray, and only
-// what has bounced more than once, B - E - D, from the leaves.
-enum class Shown { Leaves, DirectPerPixel };
+// what has bounced more than once, B - E - D, from the leaves -- or the same split with
+// B - E - D gathered over the links at the leaves' corners (the final gather,
+// link_gather.hpp).
+enum class Shown { Leaves, DirectPerPixel, Gathered };
 
 struct Scored {
   gi::Image picture;
@@ -68,10 +71,11 @@ Scored score(const Setup& s, const gi::HierarchicalRun& run, Shown shown) {
   } else {
     out.picture = s.direct;
     const std::vector<gi::Color> rest = gi::indirect_part(leaves.mesh, B, run.result.direct);
-    const gi::Image indirect = gi::render_radiosity_picture(elements, leaves.mesh, rest,
-                                                            gi::leaf_vertex_radiosity(leaves, rest), s.scene.camera,
-                                                            s.display)
-                                   .radiance;
+    const std::vector<gi::Color> at_vertices = shown == Shown::Gathered
+                                                   ? gi::gathered_at_vertices(run.hierarchy, leaves, s.threads)
+                                                   : gi::leaf_vertex_radiosity(leaves, rest);
+    const gi::Image indirect =
+        gi::render_radiosity_picture(elements, leaves.mesh, rest, at_vertices, s.scene.camera, s.display).radiance;
     for (std::size_t i = 0; i < out.picture.pixels.size(); ++i) out.picture.pixels[i] += indirect.pixels[i];
     out.seconds = s.direct_seconds + timer.seconds();
   }
@@ -96,7 +100,7 @@ void thresholds(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
                    {"link MB", 2}, {"s", 2}, {"error %", 2}});
   gi::Series links{"hierarchical: links", {}, {}}, square{"uniform mesh: n^2 form factors", {}, {}};
   gi::Series all{"hierarchical, all light by links", {}, {}}, exact{"hierarchical, exact direct", {}, {}},
-      pixel{"hierarchical, direct per pixel", {}, {}};
+      pixel{"hierarchical, direct per pixel", {}, {}}, gathered{"hierarchical, direct per pixel, final gather", {}, {}};
   std::vector<gi::Image> shown;
   for (const double eps : {1e-2, 3e-3, 1e-3, 3e-4}) {
     for (const bool exact_direct : {false, true}) {
@@ -119,10 +123,12 @@ void thresholds(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
         continue;
       }
       row("exact direct", score(s, run, Shown::Leaves), exact);
-      const Scored per_pixel = score(s, run, Shown::DirectPerPixel);
-      row("direct per pixel", per_pixel, pixel);
+      row("direct per pixel", score(s, run, Shown::DirectPerPixel), pixel);
+      const Scored final_gather = score(s, run, Shown::Gathered);
+      row("final gather", final_gather, gathered);
       if (eps != s.settings.refinement.threshold) continue;
-      lesson.picture(per_pixel.picture, "hierarchical", "exact direct light per pixel, the rest from the leaves",
+      lesson.picture(final_gather.picture, "hierarchical",
+                     "exact direct light per pixel, the rest gathered over the links at the leaves' corners",
                      {s.scene.camera, s.display.width, s.display.height, gi::describe_pixel_samples(s.display)},
                      s.exposure);
       const gi::LeafMesh mesh = gi::leaf_mesh(run.hierarchy);
@@ -157,6 +163,7 @@ void thresholds(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
                 true, true, {links, square}},
                "links");
   chart.series.push_back(all), chart.series.push_back(exact), chart.series.push_back(pixel);
+  chart.series.push_back(gathered);
 }
 
 // 2. Uniform meshes as lesson 12 seats them (exact direct light, hemicube sized to the

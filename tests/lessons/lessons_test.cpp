@@ -250,13 +250,14 @@ TEST(Lessons, CornellBenchScoresARecipeAgainstTheTruth) {
   EXPECT_LT(error_of(pixels.output), 10) << pixels.output;
   EXPECT_TRUE(fs::exists(out_dir("12_bench") + "/cornell.pfm"));
   // Lesson 13's hierarchy seated in the same bench: a coarse one (BF_eps 1e-2, min area
-  // 1e-3) measured 5.42%, direct per pixel; asserted between 3% and 12%.
+  // 1e-3), direct per pixel and what bounced gathered over the links, measured 2.71%
+  // (5.42% from the leaves' means, before the final gather); asserted between 1.5% and 6%.
   const LessonRun tree =
       run("12_cornell_bench", "--solver hierarchical --threshold 1e-2 --min-area 1e-3 --out " + out_dir("12_bench"));
   ASSERT_EQ(tree.status, 0) << tree.output;
-  EXPECT_NE(tree.output.find("hierarchical (BF_eps 1e-02, min area 1e-03)"), std::string::npos) << tree.output;
-  EXPECT_GT(error_of(tree.output), 3) << tree.output;
-  EXPECT_LT(error_of(tree.output), 12) << tree.output;
+  EXPECT_NE(tree.output.find("hierarchical (BF_eps 1e-02, min area 1e-03, order 3)"), std::string::npos) << tree.output;
+  EXPECT_GT(error_of(tree.output), 1.5) << tree.output;
+  EXPECT_LT(error_of(tree.output), 6) << tree.output;
   const LessonRun bad = run("12_cornell_bench", "--direct sometimes");
   EXPECT_EQ(bad.status, 2);
   EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;

@@ -31,5 +31,10 @@ Image render_direct_light(const FormFactorScene& scene, const Mesh& mesh, const 
 Image render_split_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
                            const std::vector<Color>& D, const Camera& camera, const DisplaySettings& settings,
                            const DirectLightSettings& direct);
+// The same with B - E - D given at the vertices too, one per mesh vertex, for Smooth
+// shading to interpolate (hierarchical radiosity's final gather, link_gather.hpp).
+Image render_split_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
+                           const std::vector<Color>& D, const std::vector<Color>& vertex_indirect,
+                           const Camera& camera, const DisplaySettings& settings, const DirectLightSettings& direct);
 
 }  // namespace gi

@@ -89,6 +89,7 @@ RecipeResult hierarchical_recipe(const std::vector<Surface>& surfaces, const Rec
                                                              result.solve_seconds)
                                          : 0.0;
   result.mesh = leaf_mesh(run.hierarchy).mesh;
+  result.hierarchy = std::make_shared<const Hierarchy>(std::move(run.hierarchy));
   result.B = std::move(run.result.solution.B);
   result.direct = std::move(run.result.direct);
   result.status = run.result.solution.status;

@@ -1,4 +1,5 @@
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,9 @@ struct RecipeResult {
   double form_factor_seconds = 0;  // the matrix (for progressive: the rows, as they are shot; hierarchical: refinement)
   double direct_seconds = 0;       // direct_radiosity (0 without exact_direct)
   double solve_seconds = 0;        // the solver, form factors excluded
+  // Hierarchical: the hierarchy and its links, element k being leaves(*hierarchy)[k], for
+  // the final gather (link_gather.hpp).
+  std::shared_ptr<const Hierarchy> hierarchy;
   double seconds() const { return form_factor_seconds + direct_seconds + solve_seconds; }
 };
 

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "gi/radiosity/direct_display.hpp"
+#include "gi/radiosity/hierarchical/link_gather.hpp"
 
 namespace gi {
 
@@ -12,8 +13,12 @@ Image recipe_picture(const RecipeResult& result, const Camera& camera, const Dis
   if (!direct_per_pixel) return render_radiosity_picture(elements, result.mesh, result.B, camera, display).radiance;
   if (result.direct.size() != result.B.size())
     throw std::invalid_argument("recipe picture: the direct light per pixel needs a recipe solved with exact_direct");
-  // L = (E + rho H(x)) / pi per eye ray, plus (B - E - D) / pi from the mesh.
-  return render_split_picture(elements, result.mesh, result.B, result.direct, camera, display, direct);
+  // L = (E + rho H(x)) / pi per eye ray, plus (B - E - D) / pi from the mesh; for
+  // hierarchical radiosity gathered over the links at the leaves' corners (link_gather.hpp).
+  if (!result.hierarchy) return render_split_picture(elements, result.mesh, result.B, result.direct, camera, display, direct);
+  return render_split_picture(elements, result.mesh, result.B, result.direct,
+                              gathered_at_vertices(*result.hierarchy, leaf_mesh(*result.hierarchy), display.threads),
+                              camera, display, direct);
 }
 
 }  // namespace gi

@@ -1,0 +1,76 @@
+#include "gi/radiosity/hierarchical/link_gather.hpp"
+
+#include <array>
+
+#include "gi/core/parallel.hpp"
+#include "gi/radiosity/form_factor_formulas.hpp"
+
+namespace gi {
+
+namespace {
+
+// light_l: what the link hands its receiver, before rho (as push_pull.cpp's gather).
+Color link_light(const Hierarchy& h, const Link& link) {
+  const Node& q = h.nodes[link.source];
+  if (q.leaf()) return link.F * link.visibility * q.B;
+  Color sum(0.0);
+  for (int c = 0; c < 4; ++c) sum += link.F * link.by_quarter[c] * h.nodes[q.children[c]].B;
+  return sum;
+}
+
+}  // namespace
+
+LinkGather::LinkGather(const Hierarchy& h) : hierarchy_(&h), far_(h.nodes.size(), Color(0.0)), near_(h.nodes.size()) {
+  for (std::size_t n = 0; n < h.nodes.size(); ++n)
+    for (std::size_t k = 0; k < h.nodes[n].links.size(); ++k) {
+      const Link& link = h.nodes[n].links[k];
+      if (link.F > 0 && link.F_max > near_spread * link.F_min)
+        near_[n].push_back(static_cast<int>(k));
+      else
+        far_[n] += link_light(h, link);
+    }
+}
+
+Color LinkGather::at(int leaf, const vec3& x) const {
+  const Hierarchy& h = *hierarchy_;
+  const vec3& n = h.nodes[leaf].shape.normal;
+  Color sum(0.0);
+  for (int a = leaf; a >= 0; a = h.nodes[a].parent) {
+    sum += far_[a];
+    for (int k : near_[a]) {
+      const Link& link = h.nodes[a].links[k];
+      sum += link_light(h, link) * (form_factor_point_to_polygon(x, n, h.nodes[link.source].shape) / link.F);
+    }
+  }
+  return h.nodes[leaf].rho * sum;
+}
+
+std::vector<Color> gathered_at_vertices(const Hierarchy& h, const LeafMesh& leaves, int threads) {
+  const LinkGather gather(h);
+  const std::vector<Element>& elements = leaves.mesh.elements;
+  std::vector<char> t_vertex(leaves.mesh.vertices.size(), 0);
+  for (const LeafMesh::TVertex& tv : leaves.t_vertices) t_vertex[tv.vertex] = 1;
+  // Corners in the order of Polygon::corners: (0, 0), (1, 0), (1, 1), (0, 1) of the leaf's square.
+  constexpr double lo = gather_inset, hi = 1 - gather_inset;
+  constexpr std::array<vec2, 4> corner{vec2(lo, lo), vec2(hi, lo), vec2(hi, hi), vec2(lo, hi)};
+  std::vector<std::array<Color, 4>> at(elements.size());
+  parallel_for(static_cast<int>(elements.size()), threads, [&](int e) {
+    const int leaf = leaves.node[e];
+    for (int k = 0; k < 4; ++k)
+      if (!t_vertex[elements[e].vertices[k]])
+        at[e][k] = gather.at(leaf, node_point(h, h.nodes[leaf], corner[k].x, corner[k].y));
+  });
+  std::vector<Color> sum(leaves.mesh.vertices.size(), Color(0.0));
+  std::vector<double> weight(sum.size(), 0.0);
+  for (std::size_t e = 0; e < elements.size(); ++e)
+    for (int k = 0; k < 4; ++k) {
+      sum[elements[e].vertices[k]] += elements[e].shape.area * at[e][k];
+      weight[elements[e].vertices[k]] += elements[e].shape.area;
+    }
+  for (std::size_t v = 0; v < sum.size(); ++v)
+    if (weight[v] > 0) sum[v] /= weight[v];
+  for (const LeafMesh::TVertex& tv : leaves.t_vertices) sum[tv.vertex] = (1 - tv.t) * sum[tv.a] + tv.t * sum[tv.b];
+  return sum;
+}
+
+}  // namespace gi

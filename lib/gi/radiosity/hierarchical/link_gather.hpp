@@ -1,0 +1,45 @@
+#pragma once
+#include <vector>
+
+#include "gi/radiosity/hierarchical/leaf_mesh.hpp"
+
+namespace gi {
+
+// The final gather: the light that has bounced, gathered at a point x of a leaf over
+// the links of the leaf and of its ancestors -- the links the leaf's B came through --
+// with each link's F taken at x instead of once for its whole receiver (Lischinski,
+// Tampieri and Greenberg 1993 gather over the links so at the end of their solution):
+//   gathered(x) = rho sum over links l of  light_l F(x -> q_l) / F_l
+// light_l = F_l V_l B_q, what the link hands its receiver (push_pull.hpp's gather, by
+// the source's quarters where it has children), F_l its F (the mean over the receiver)
+// and F(x -> q_l) the exact point-to-polygon factor (form_factor_formulas.hpp). A link
+// spreads its light evenly over its receiver; here the light follows F, rising towards
+// a crease where the receiver meets its source as it does in the scene, however large
+// the receiver. Only F is new: V and B are the solution's.
+//
+// A link whose F changes little over its receiver (F_max <= near_spread F_min) is
+// taken as it is: F(x) / F_l is then within its spread of 1, and its light counts once
+// per node, not once per point.
+inline constexpr double near_spread = 1.5;
+
+class LinkGather {
+ public:
+  explicit LinkGather(const Hierarchy& hierarchy);
+  Color at(int leaf, const vec3& x) const;  // gathered(x) for a point x of leaf `leaf`
+
+ private:
+  const Hierarchy* hierarchy_;
+  std::vector<Color> far_;               // per node: the light of its far links, summed
+  std::vector<std::vector<int>> near_;   // per node: its near links (indices into Node::links)
+};
+
+// gathered(x) at every vertex of the leaf mesh, for Gouraud shading: each leaf gathers
+// at its corners, set in by gather_inset of its size (at a crease itself F to the
+// neighbour is its peak, and a line to the next vertex through it lit the whole leaf
+// by the crease's light), a vertex takes the area-weighted mean of its leaves' values
+// (each leaf has its own links), and a T-vertex the value its edge has there
+// (leaf_mesh.hpp's cure for cracks). Same values for any thread count.
+inline constexpr double gather_inset = 0.05;
+std::vector<Color> gathered_at_vertices(const Hierarchy& hierarchy, const LeafMesh& leaves, int threads);
+
+}  // namespace gi
