@@ -48,13 +48,6 @@ Image render_direct_light(const FormFactorScene& scene, const Mesh& mesh, const 
 }
 
 Image render_split_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
-                           const std::vector<Color>& D, const Camera& camera, const DisplaySettings& settings,
-                           const DirectLightSettings& direct) {
-  const std::vector<Color> indirect = indirect_part(mesh, B, D);
-  return render_split_picture(scene, mesh, B, D, vertex_radiosity(mesh, indirect), camera, settings, direct);
-}
-
-Image render_split_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
                            const std::vector<Color>& D, const std::vector<Color>& vertex_indirect,
                            const Camera& camera, const DisplaySettings& settings, const DirectLightSettings& direct) {
   Image picture = render_direct_light(scene, mesh, camera, settings, direct);
@@ -62,6 +55,13 @@ Image render_split_picture(const FormFactorScene& scene, const Mesh& mesh, const
       render_radiosity_picture(scene, mesh, indirect_part(mesh, B, D), vertex_indirect, camera, settings).radiance;
   for (std::size_t i = 0; i < picture.pixels.size(); ++i) picture.pixels[i] += rest.pixels[i];
   return picture;
+}
+
+Image render_split_picture(const FormFactorScene& scene, const Mesh& mesh, const std::vector<Color>& B,
+                           const std::vector<Color>& D, const Camera& camera, const DisplaySettings& settings,
+                           const DirectLightSettings& direct) {
+  const std::vector<Color> indirect = indirect_part(mesh, B, D);
+  return render_split_picture(scene, mesh, B, D, vertex_radiosity(mesh, indirect), camera, settings, direct);
 }
 
 }  // namespace gi

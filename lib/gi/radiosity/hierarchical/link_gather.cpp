@@ -2,12 +2,11 @@
 
 #include <array>
 
+#include "gi/core/not_implemented.hpp"
 #include "gi/core/parallel.hpp"
 #include "gi/radiosity/form_factor_formulas.hpp"
 
 namespace gi {
-
-namespace {
 
 // light_l: what the link hands its receiver, before rho (as push_pull.cpp's gather).
 Color link_light(const Hierarchy& h, const Link& link) {
@@ -17,8 +16,6 @@ Color link_light(const Hierarchy& h, const Link& link) {
   for (int c = 0; c < 4; ++c) sum += link.F * link.by_quarter[c] * h.nodes[q.children[c]].B;
   return sum;
 }
-
-}  // namespace
 
 LinkGather::LinkGather(const Hierarchy& h) : hierarchy_(&h), far_(h.nodes.size(), Color(0.0)), near_(h.nodes.size()) {
   for (std::size_t n = 0; n < h.nodes.size(); ++n)
@@ -32,6 +29,10 @@ LinkGather::LinkGather(const Hierarchy& h) : hierarchy_(&h), far_(h.nodes.size()
 }
 
 Color LinkGather::at(int leaf, const vec3& x) const {
+  // BEGIN EXERCISE 13.5 gathering at a point
+  // The leaf's links and every ancestor's: push-pull hands what a node gathered to all
+  // of it. A far link counts as it is (far_), a near one scaled by F(x -> q) / F_l,
+  // with the receiver's normal at x.
   const Hierarchy& h = *hierarchy_;
   const vec3& n = h.nodes[leaf].shape.normal;
   Color sum(0.0);
@@ -43,6 +44,7 @@ Color LinkGather::at(int leaf, const vec3& x) const {
     }
   }
   return h.nodes[leaf].rho * sum;
+  // END EXERCISE 13.5
 }
 
 std::vector<Color> gathered_at_vertices(const Hierarchy& h, const LeafMesh& leaves, int threads) {

@@ -22,6 +22,10 @@ namespace gi {
 // per node, not once per point.
 inline constexpr double near_spread = 1.5;
 
+// light_l = F_l V_l B_q: what link l hands its receiver, before rho (push_pull.hpp's
+// gather, by the source's quarters where it has children).
+Color link_light(const Hierarchy& hierarchy, const Link& link);
+
 class LinkGather {
  public:
   explicit LinkGather(const Hierarchy& hierarchy);
