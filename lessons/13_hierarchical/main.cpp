@@ -123,10 +123,18 @@ void thresholds(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
         continue;
       }
       row("exact direct", score(s, run, Shown::Leaves), exact);
-      row("direct per pixel", score(s, run, Shown::DirectPerPixel), pixel);
+      const Scored means = score(s, run, Shown::DirectPerPixel);
+      row("direct per pixel", means, pixel);
       const Scored final_gather = score(s, run, Shown::Gathered);
       row("final gather", final_gather, gathered);
       if (eps != s.settings.refinement.threshold) continue;
+      // The tall block's foot, where a face sees the floor at its feet: enlarged 4x.
+      const int x0 = 36, y0 = 150, w = 96;
+      std::vector<gi::Image> strip;
+      for (const gi::Image* p : {&means.picture, &final_gather.picture, &s.truth})
+        strip.push_back(gi::enlarge(gi::crop(*p, x0, y0, w, w), 4));
+      lesson.diagram(gi::side_by_side(strip), "final_gather", "the tall block's foot: what bounced from the leaves' "
+                     "means, gathered over the links at their corners, the path-traced truth", s.exposure);
       lesson.picture(final_gather.picture, "hierarchical",
                      "exact direct light per pixel, the rest gathered over the links at the leaves' corners",
                      {s.scene.camera, s.display.width, s.display.height, gi::describe_pixel_samples(s.display)},
