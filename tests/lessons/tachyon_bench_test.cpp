@@ -2,7 +2,9 @@
 // Tachyon or looks at a time: the parser reads stored outputs of real runs
 // (tests/data/tachyon/), and the bench runs a stand-in, a shell script on PATH that
 // prints canned outputs with times chosen so that every median, range and ratio is
-// known in advance.
+// known in advance. In a student kit our tracer stops at its first exercise (status 3,
+// "... is not implemented yet"): every check of a status prints the output, so that
+// ctest reports those tests as skipped.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -218,7 +220,7 @@ TEST(TachyonBench, WithoutTachyonSaysHowToInstallItAndExitsOne) {
   const ScopedVariable path("PATH", nothing.path());
   fs::remove_all(out_dir("02_no_tachyon"));
   const LessonRun r = run("02_tachyon_bench", "--out " + out_dir("02_no_tachyon"));
-  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_EQ(r.output, "02_tachyon_bench: error: tachyon not found on PATH: apt-get install tachyon-bin-nox\n");
   EXPECT_FALSE(fs::exists(out_dir("02_no_tachyon"))) << "refused before any work";
   const LessonRun help = run("02_tachyon_bench", "--help");
@@ -232,7 +234,7 @@ TEST(TachyonBench, AFailingTachyonStopsTheBenchWithOneLine) {
   const FakeTachyon tachyon;
   tachyon.write("reply_1_1.txt", sample("missing_scene.txt"));
   LessonRun r = run("02_tachyon_bench", "--width 16 --height 16 --out " + out_dir("02_tachyon_fails"));
-  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_EQ(lines_in(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("\"Parser failed due to nonexistent input file: nowhere.dat\""), std::string::npos)
       << r.output;
@@ -240,13 +242,13 @@ TEST(TachyonBench, AFailingTachyonStopsTheBenchWithOneLine) {
 
   tachyon.write("reply_1_2.txt", sample("garbled_time.txt"));
   r = run("02_tachyon_bench", "--width 16 --height 16 --out " + out_dir("02_tachyon_fails"));
-  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_EQ(lines_in(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("0.09,71 seconds"), std::string::npos) << r.output;
 
   tachyon.write("reply_1_3.txt", sample("one_thread.txt"));  // call 3 replies; call 1 on two threads has none
   r = run("02_tachyon_bench", "--width 16 --height 16 --out " + out_dir("02_tachyon_fails"));
-  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_EQ(lines_in(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("tachyon exited with status 1"), std::string::npos) << r.output;
   EXPECT_TRUE(tachyon.temp_is_empty());
@@ -256,7 +258,7 @@ TEST(TachyonBench, AHangingTachyonIsStoppedAtTheTimeLimit) {
   const FakeTachyon tachyon;
   tachyon.write("tachyon", "#!/bin/sh\nexec /bin/sleep 60\n");
   const LessonRun r = run("02_tachyon_bench", "--width 16 --height 16 --time-limit 1 --out " + out_dir("02_tachyon_hangs"));
-  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.status, 1) << r.output;
   EXPECT_EQ(lines_in(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("did not finish within 1 s and was stopped"), std::string::npos) << r.output;
   EXPECT_TRUE(tachyon.temp_is_empty());
