@@ -86,16 +86,18 @@ std::string processor() {
   return "an unknown processor";
 }
 
-std::string compiler() {
+// "g++ 12.2.0, Release build": how our side was built.
+std::string build() {
 #if defined(__clang__)
-  std::string name = std::string("clang ") + __clang_version__;
+  std::string text = std::string("clang ") + __clang_version__;
 #else
-  std::string name = std::string("g++ ") + __VERSION__;
+  std::string text = std::string("g++ ") + __VERSION__;
 #endif
+  text += std::string(", ") + GI_BUILD_TYPE + " build";
 #if defined(__SANITIZE_ADDRESS__)
-  name += ", with AddressSanitizer: its times say nothing of the tracer's speed";
+  text += " with AddressSanitizer (its times say nothing of the tracer's speed)";
 #endif
-  return name;
+  return text;
 }
 
 }  // namespace
@@ -169,8 +171,7 @@ int main(int argc, char** argv) {
     std::cout << '\n';
     lesson.say("ours/Tachyon: our median over Tachyon's (below 1, ours is faster); speed-up: the median on one "
                "thread over the median on " + many + ".");
-    lesson.say("ours: gi-workbench's Whitted tracer (lesson 02), --accel " + accel + ", " + compiler() + ", " +
-               GI_BUILD_TYPE + " build.");
+    lesson.say("ours: gi-workbench's Whitted tracer (lesson 02), --accel " + accel + ", " + build() + ".");
     const std::string package = gi::debian_package_of(tachyon.program);
     lesson.say("Tachyon: " +
                (tachyon.version.empty() ? "it prints no version" : "\"Version " + tachyon.version + "\" as it prints it") +
