@@ -24,12 +24,18 @@ namespace gi {
 //                 bit by bit; a lone child entered goes on without the stack.
 //   quads beside  the leaves' quads copied in the tree's order, so that a leaf's quads
 //                 share cache lines.
+//   prefetch      a visit asks for its child nodes' cache lines before its slab test, so
+//                 the one the ray goes on to is on its way while the test runs.
+//   leaf verdicts a quad's test without a branch on its outcome (crossing(), quad.hpp),
+//                 and the nearest quad's Hit built once, at the end.
 //
-// The primitives are still intersected in double by the same routines, so every hit
+// The primitives are still intersected in double by the same arithmetic, so every hit
 // is the very hit the plain walk finds, to the bit.
+constexpr int fast_bvh_width = 4;  // children per node
+
 struct alignas(64) FastBvhNode {  // starts a cache line: a node spans two, never three
   // Child c's box along axis a is [bounds[2a][c], bounds[2a + 1][c]]: rows lo.x, hi.x,
-  // lo.y, hi.y, lo.z, hi.z. An unused child has lo = +inf, hi = -inf: no ray enters it.
+  // lo.y, hi.y, lo.z, hi.z. An unused child's six bounds are NaN: no ray enters it.
   float bounds[6][4];
   // count[c] == 0: child c is the node nodes[index[c]] (or unused);
   // count[c] > 0:  child c is a leaf holding refs[index[c], index[c] + count[c]).
