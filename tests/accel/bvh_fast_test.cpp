@@ -86,6 +86,7 @@ TEST(FastBvh, AWideNodeStandsForUpToThreeBinaryOnes) {
   const gi::Bvh bvh = gi::build_bvh(room);
   const gi::FastBvh fast = gi::make_fast_bvh(bvh, room);
   EXPECT_EQ(sizeof(gi::FastBvhNode), 128u);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(fast.nodes.data()) % 128, 0u) << "nodes start at a multiple of 128 bytes";
   std::size_t interior = 0, leaves = 0, children = 0;
   for (const gi::BvhNode& node : bvh.nodes) (node.count > 0 ? leaves : interior) += 1;
   for (const gi::FastBvhNode& node : fast.nodes)
