@@ -157,22 +157,24 @@ inline void test_leaf(const FastBvh& bvh, const Scene& scene, std::int32_t first
     const PrimitiveRef ref = bvh.refs[static_cast<std::size_t>(i)];
     if (ref.kind == PrimitiveKind::Quad) {
       const QuadCrossing x = crossing(ray, bvh.quads[static_cast<std::size_t>(i)]);
-      if (!x.hit) continue;
-      ray.t_max = x.t;
-      nearest_quad = i;
+      if (x.hit) {
+        ray.t_max = x.t;
+        t_max = splat(float_up(x.t));
+        nearest_quad = i;
+      }
     } else if (auto hit = intersect(ray, scene, ref)) {
       ray.t_max = hit->t;
+      t_max = splat(float_up(hit->t));
       other = hit;
       nearest_quad = -1;
-    } else {
-      continue;
     }
-    t_max = splat(float_up(ray.t_max));
   }
 }
 
+// The walk's answer: the nearest quad's Hit, built from its t (which ray.t_max holds),
+// or the other kind's.
 inline std::optional<Hit> nearest_hit(const FastBvh& bvh, const Ray& ray, std::int32_t nearest_quad,
-                               const std::optional<Hit>& other) {
+                                      const std::optional<Hit>& other) {
   if (nearest_quad < 0) return other;
   Hit hit = hit_at(ray, bvh.quads[static_cast<std::size_t>(nearest_quad)], ray.t_max);
   hit.object = bvh.refs[static_cast<std::size_t>(nearest_quad)].index;
