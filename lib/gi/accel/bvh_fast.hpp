@@ -24,19 +24,12 @@ namespace gi {
 //                 bit by bit; a lone child entered goes on without the stack.
 //   quads beside  the leaves' quads copied in the tree's order, so that a leaf's quads
 //                 share cache lines.
-//   leaf verdicts a quad's test without a branch on whether (s, u) is inside (crossing(),
-//                 quad.hpp), and the nearest quad's Hit built once, at the end.
 //
-// The primitives are still intersected in double by the same arithmetic, so every hit
+// The primitives are still intersected in double by the same routines, so every hit
 // is the very hit the plain walk finds, to the bit.
-constexpr int fast_bvh_width = 4;  // children per node
-
-// Aligned to 128 bytes, its size: a node is then one of the pairs of cache lines that
-// the processor's adjacent-line prefetcher fetches together, so that a miss on one of
-// its lines brings in the other.
-struct alignas(128) FastBvhNode {
+struct alignas(64) FastBvhNode {  // starts a cache line: a node spans two, never three
   // Child c's box along axis a is [bounds[2a][c], bounds[2a + 1][c]]: rows lo.x, hi.x,
-  // lo.y, hi.y, lo.z, hi.z. An unused child's six bounds are NaN: no ray enters it.
+  // lo.y, hi.y, lo.z, hi.z. An unused child has lo = +inf, hi = -inf: no ray enters it.
   float bounds[6][4];
   // count[c] == 0: child c is the node nodes[index[c]] (or unused);
   // count[c] > 0:  child c is a leaf holding refs[index[c], index[c] + count[c]).

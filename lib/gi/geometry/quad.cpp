@@ -44,29 +44,4 @@ std::optional<Hit> intersect(const Ray& ray, const Quad& quad) {
   return Hit{t, point, normalize(n), quad.material};
 }
 
-// intersect's values by the same expressions. A t outside [t_min, t_max] still ends
-// the test at once (that branch goes the same way for most of a ray's tests, and spares
-// the three divisions and two square roots that follow), but the rejections by (s, u)
-// and by the grazing test are joined into one verdict with | instead of ||: no branch
-// depends on them. Which of a leaf's quads a random ray hits within its reach is a coin
-// toss the processor cannot predict, and a wrong guess costs more than the work the
-// early returns spare (docs/05).
-QuadCrossing crossing(const Ray& ray, const Quad& quad) {
-  const vec3 n = cross(quad.edge_u, quad.edge_v);
-  const double denominator = dot(ray.direction, n);
-  const double t = dot(quad.corner - ray.origin, n) / denominator;
-  if (t < ray.t_min || t > ray.t_max) return {t, false};  // (a NaN t goes on, as in intersect)
-  const vec3 p = ray.at(t) - quad.corner;
-  const vec3 w = n / dot(n, n);
-  const double s = dot(w, cross(p, quad.edge_v));
-  const double u = dot(w, cross(quad.edge_u, p));
-  const bool miss = (s < 0) | (s > 1) | (u < 0) | (u > 1) |
-                    (std::abs(denominator) < 1e-12 * length(ray.direction) * length(n));
-  return {t, !miss};
-}
-
-Hit hit_at(const Ray& ray, const Quad& quad, double t) {
-  return Hit{t, ray.at(t), normalize(cross(quad.edge_u, quad.edge_v)), quad.material};
-}
-
 }  // namespace gi

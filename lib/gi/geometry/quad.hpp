@@ -29,14 +29,4 @@ std::array<Quad, 6> box_quads(const vec3& lo, const vec3& hi, int material);
 // The hit with t in [ray.t_min, ray.t_max] inside the parallelogram, or nothing.
 std::optional<Hit> intersect(const Ray& ray, const Quad& quad);
 
-// The same test with one branch instead of several, for the fast walk's leaves
-// (bvh_fast.cpp): whether intersect(ray, quad) has a hit, and its t. Where it hits,
-// hit_at(ray, quad, t) is that very Hit, to the bit.
-struct QuadCrossing {
-  double t;
-  bool hit;
-};
-QuadCrossing crossing(const Ray& ray, const Quad& quad);
-Hit hit_at(const Ray& ray, const Quad& quad, double t);
-
 }  // namespace gi
