@@ -71,7 +71,8 @@ TEST(LinkGather, AveragesOverTheReceiverToWhatTheSolverGathered) {
   const double solver = run.hierarchy.nodes[0].gathered.x, exact = rho * E * gi::ff_perpendicular_rectangles(1, 1, 1);
   EXPECT_NEAR(mean(3), solver, 1e-14);
   EXPECT_NEAR(mean(12), exact, 2e-6 * exact);
-  EXPECT_LT(std::abs(mean(12) - exact), 0.1 * std::abs(solver - exact)) << "no nearer the closed form than the 3 x 3 rule";
+  EXPECT_LT(std::abs(mean(12) - exact), 0.1 * std::abs(solver - exact))
+      << "no nearer the closed form than the 3 x 3 rule";
 }
 
 TEST(LinkGather, AFarLinkIsTheSolversConstant) {

@@ -15,7 +15,8 @@ Image recipe_picture(const RecipeResult& result, const Camera& camera, const Dis
     throw std::invalid_argument("recipe picture: the direct light per pixel needs a recipe solved with exact_direct");
   // L = (E + rho H(x)) / pi per eye ray, plus (B - E - D) / pi from the mesh; for
   // hierarchical radiosity gathered over the links at the leaves' corners (link_gather.hpp).
-  if (!result.hierarchy) return render_split_picture(elements, result.mesh, result.B, result.direct, camera, display, direct);
+  if (!result.hierarchy)
+    return render_split_picture(elements, result.mesh, result.B, result.direct, camera, display, direct);
   return render_split_picture(elements, result.mesh, result.B, result.direct,
                               gathered_at_vertices(*result.hierarchy, leaf_mesh(*result.hierarchy), display.threads),
                               camera, display, direct);

@@ -107,10 +107,14 @@ LeafMesh leaf_mesh(const Hierarchy& h) {
   return out;
 }
 
+void settle_t_vertices(const LeafMesh& leaves, std::vector<Color>& vertex_values) {
+  for (const LeafMesh::TVertex& tv : leaves.t_vertices)
+    vertex_values[tv.vertex] = (1 - tv.t) * vertex_values[tv.a] + tv.t * vertex_values[tv.b];
+}
+
 std::vector<Color> leaf_vertex_radiosity(const LeafMesh& leaves, const std::vector<Color>& B) {
   std::vector<Color> vertex_B = vertex_radiosity(leaves.mesh, B);
-  for (const LeafMesh::TVertex& tv : leaves.t_vertices)
-    vertex_B[tv.vertex] = (1 - tv.t) * vertex_B[tv.a] + tv.t * vertex_B[tv.b];
+  settle_t_vertices(leaves, vertex_B);
   return vertex_B;
 }
 

@@ -37,4 +37,8 @@ LeafMesh leaf_mesh(const Hierarchy& hierarchy);
 // `B` holds one radiosity per element.
 std::vector<Color> leaf_vertex_radiosity(const LeafMesh& leaves, const std::vector<Color>& B);
 
+// The cure itself, on any values held one per vertex: every T-vertex set from the ends
+// of its edge, B_v = (1 - t) B_a + t B_b, coarsest edges first.
+void settle_t_vertices(const LeafMesh& leaves, std::vector<Color>& vertex_values);
+
 }  // namespace gi

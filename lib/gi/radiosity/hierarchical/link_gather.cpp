@@ -71,7 +71,7 @@ std::vector<Color> gathered_at_vertices(const Hierarchy& h, const LeafMesh& leav
     }
   for (std::size_t v = 0; v < sum.size(); ++v)
     if (weight[v] > 0) sum[v] /= weight[v];
-  for (const LeafMesh::TVertex& tv : leaves.t_vertices) sum[tv.vertex] = (1 - tv.t) * sum[tv.a] + tv.t * sum[tv.b];
+  settle_t_vertices(leaves, sum);
   return sum;
 }
 
