@@ -30,7 +30,12 @@ double contour_integral(const vec3& x, const vec3& n, const vec3* vertices, int 
     const vec3 c = cross(b, a);
     const double sine = length(c);
     if (sine == 0) continue;  // an edge pointing at x subtends no angle
-    const double gamma = std::atan2(sine, dot(a, b));
+    // gamma = atan2(sine, cosine), in (0, pi) as sine > 0, written as one arctangent:
+    // of sine / cosine where cosine > 0, else pi/2 + atan(-cosine / sine); as exact as
+    // atan2, to a rounding or two. Hierarchical radiosity takes millions of these, and
+    // glibc's atan2 was a sixth of its time, its atan takes half of that.
+    const double cosine = dot(a, b);
+    const double gamma = cosine > 0 ? std::atan(sine / cosine) : pi / 2 - std::atan(cosine / sine);
     sum += gamma * dot(n, c) / sine;
   }
   return sum / (2 * pi);
@@ -44,8 +49,14 @@ double point_to_polygon(const vec3& x, const vec3& n, const Polygon& polygon) {
   // see its front -- which also makes F_ii = 0 for a patch and its coplanar
   // neighbours, without trusting round-off (or a twisted wall's 3 mm) to decide.
   if (dot(polygon.normal, x - polygon.centre) <= 0 || dot(n, polygon.normal) > 1 - 1e-6) return 0;
-  // The part in front of x's tangent plane (Sutherland-Hodgman against one plane).
-  const ConvexPolygon front = clip(outline(polygon), n, dot(n, x), 0.0);
+  // The part in front of x's tangent plane (Sutherland-Hodgman against one plane). All
+  // of it, for a source wholly in front (the usual case): its corners, as clip would
+  // return them, without the copy.
+  const double offset = dot(n, x);
+  bool wholly_in_front = true;
+  for (const vec3& corner : polygon.corners) wholly_in_front = wholly_in_front && dot(n, corner) - offset > 0;
+  if (wholly_in_front) return contour_integral(x, n, polygon.corners.data(), 4);
+  const ConvexPolygon front = clip(outline(polygon), n, offset, 0.0);
   return front.count < 3 ? 0 : contour_integral(x, n, front.corners.data(), front.count);
 }
 
@@ -64,10 +75,16 @@ double form_factor_analytic(const Polygon& from, const Polygon& to, int order) {
 
 FormFactorRange form_factor_analytic_range(const Polygon& from, const Polygon& to, int order,
                                            const std::function<bool(double s, double t)>& counts,
-                                           const std::vector<vec2>& also_at) {
+                                           std::span<const vec2> also_at) {
   if (order < 1 || order > 16) throw std::invalid_argument("analytic form factor: the order must lie in [1, 16]");
   check(from);
   check(to);
+  return analytic_range_unchecked(from, to, order, counts, also_at);
+}
+
+FormFactorRange analytic_range_unchecked(const Polygon& from, const Polygon& to, int order,
+                                         const std::function<bool(double s, double t)>& counts,
+                                         std::span<const vec2> also_at) {
   const GaussRule& rule = gauss_legendre(order);
   const std::array<vec3, 4>& c = from.corners;
   FormFactorRange range{0, 1e300, -1e300};
