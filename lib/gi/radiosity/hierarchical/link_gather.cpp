@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
 
 #include "gi/core/not_implemented.hpp"
 #include "gi/core/parallel.hpp"
@@ -20,16 +21,29 @@ Color link_light(const Hierarchy& h, const Link& link) {
 }
 
 LinkGather::LinkGather(const Hierarchy& h)
-    : hierarchy_(&h), blockers_(surface_shapes(h)), far_(h.nodes.size(), Color(0.0)), near_(h.nodes.size()) {
+    : hierarchy_(&h), blockers_(surface_shapes(h)), far_(h.nodes.size(), Color(0.0)), near_(h.nodes.size()), shafts_(h.nodes.size()) {
   for (std::size_t n = 0; n < h.nodes.size(); ++n)
     for (std::size_t k = 0; k < h.nodes[n].links.size(); ++k) {
       const Link& link = h.nodes[n].links[k];
       const bool shadow_edge = link.visibility > 0 && link.visibility < 1;
-      if (link.F > 0 && (link.F_max > near_spread * link.F_min || shadow_edge))
+      if (link.F > 0 && (link.F_max > near_spread * link.F_min || shadow_edge)) {
         near_[n].push_back(static_cast<int>(k));
-      else
+      } else
         far_[n] += link_light(h, link);
     }
+  for (std::size_t n = 0; n < h.nodes.size(); ++n) {
+    shafts_[n].resize(h.nodes[n].links.size());
+    for (int k : near_[n]) {
+      const Link& link = h.nodes[n].links[k];
+      if (!(link.visibility > 0 && link.visibility < 1)) continue;
+      // Every ray light_at casts for this link runs between the two nodes' lifted outlines.
+      std::vector<vec3> corners;
+      for (const int node : {link.receiver, link.source})
+        for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})
+          corners.push_back(lifted_point(h, h.nodes[node], u, v));
+      shafts_[n][k].emplace(blockers_, corners);
+    }
+  }
 }
 
 Color LinkGather::light_at(const Link& link, int leaf, const vec3& x) const {
@@ -39,6 +53,13 @@ Color LinkGather::light_at(const Link& link, int leaf, const vec3& x) const {
   const Node& q = h.nodes[link.source];
   const vec3 from = lifted(h, p.surface, x);  // where the links' own shadow rays start
   if (p.open != 0xFFFF && buried(blockers_, from, p.shape.normal, std::sqrt(h.total_area))) return link_light(h, link);
+  // The link's shaft, found by the link's place among its receiver's links (a link
+  // made by hand, outside the hierarchy, has none: the whole scene is tested).
+  const std::vector<Link>& links = h.nodes[link.receiver].links;
+  const Link* first = links.data();
+  const Shaft* shaft = nullptr;
+  if (std::less_equal<const Link*>()(first, &link) && std::less<const Link*>()(&link, first + links.size()))
+    if (const std::optional<Shaft>& s = shafts_[static_cast<std::size_t>(link.receiver)][&link - first]) shaft = &*s;
   constexpr int n = gather_rays_per_side;
   Color through(0.0);
   double carrying = 0;
@@ -50,7 +71,7 @@ Color LinkGather::light_at(const Link& link, int leaf, const vec3& x) const {
     if (cos_p <= 0 || cos_q <= 0) continue;                                        // carries no light
     const double w = cos_p * cos_q / (dot(d, d) * dot(d, d));
     carrying += w;
-    if (blockers_.visible(from, to)) through += w * (q.leaf() ? q.B : h.nodes[q.children[(s >= 0.5) + 2 * (t >= 0.5)]].B);
+    if (shaft ? shaft->visible(from, to) : blockers_.visible(from, to)) through += w * (q.leaf() ? q.B : h.nodes[q.children[(s >= 0.5) + 2 * (t >= 0.5)]].B);
   }
   return carrying > 0 ? link.F * through / carrying : link_light(h, link);
 }
