@@ -42,9 +42,7 @@ double contour_integral(const vec3& x, const vec3& n, const vec3* vertices, int 
   // END EXERCISE 6.2
 }
 
-namespace {
-
-double point_to_polygon(const vec3& x, const vec3& n, const Polygon& polygon) {
+double point_to_polygon_unchecked(const vec3& x, const vec3& n, const Polygon& polygon) {
   // x sees its back: nothing. And a point facing the way the polygon faces can never
   // see its front -- which also makes F_ii = 0 for a patch and its coplanar
   // neighbours, without trusting round-off (or a twisted wall's 3 mm) to decide.
@@ -60,13 +58,11 @@ double point_to_polygon(const vec3& x, const vec3& n, const Polygon& polygon) {
   return front.count < 3 ? 0 : contour_integral(x, n, front.corners.data(), front.count);
 }
 
-}  // namespace
-
 double form_factor_point_to_polygon(const vec3& x, const vec3& n, const Polygon& polygon) {
   if (!is_finite(x) || !is_finite(n) || std::abs(length(n) - 1) > 1e-6)
     throw std::invalid_argument("point-to-polygon form factor: the point must be finite and its normal unit length");
   check(polygon);
-  return point_to_polygon(x, n, polygon);
+  return point_to_polygon_unchecked(x, n, polygon);
 }
 
 double form_factor_analytic(const Polygon& from, const Polygon& to, int order) {
@@ -96,7 +92,7 @@ FormFactorRange analytic_range_unchecked(const Polygon& from, const Polygon& to,
       const vec3 x = bilinear(c, s, u);
       const vec3 ds = (1 - u) * (c[1] - c[0]) + u * (c[2] - c[3]);
       const vec3 du = (1 - s) * (c[3] - c[0]) + s * (c[2] - c[1]);
-      const double F = point_to_polygon(x, from.normal, to);
+      const double F = point_to_polygon_unchecked(x, from.normal, to);
       const double w = rule.weights[i] * rule.weights[j] * length(cross(ds, du));
       range.mean += w * F;
       if (counts && counts(s, u)) counted += w * F, counted_area += w;
@@ -104,7 +100,7 @@ FormFactorRange analytic_range_unchecked(const Polygon& from, const Polygon& to,
     }
   range.mean = counted_area > 0 ? counted / counted_area : range.mean / from.area;
   for (const vec2& st : also_at) {
-    const double F = point_to_polygon(bilinear(c, st.x, st.y), from.normal, to);
+    const double F = point_to_polygon_unchecked(bilinear(c, st.x, st.y), from.normal, to);
     range.least = std::min(range.least, F), range.greatest = std::max(range.greatest, F);
   }
   return range;

@@ -88,7 +88,7 @@ Color LinkGather::at(int leaf, const vec3& x) const {
     sum += far_[a];
     for (int k : near_[a]) {
       const Link& link = h.nodes[a].links[k];
-      sum += light_at(link, leaf, x) * (form_factor_point_to_polygon(x, n, h.nodes[link.source].shape) / link.F);
+      sum += light_at(link, leaf, x) * (point_to_polygon_unchecked(x, n, h.nodes[link.source].shape) / link.F);
     }
   }
   return h.nodes[leaf].rho * sum;
