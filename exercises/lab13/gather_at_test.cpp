@@ -87,3 +87,28 @@ TEST(Ex13_5_GatherAtAPoint, KeepsTheFarLinksAsTheyAre) {
   EXPECT_GT(g.x, 0) << "a far link's light counts too: add far_[node] for the leaf and each ancestor";
   EXPECT_NEAR(g.x, rho.x * link.F * E, 1e-12) << "far links count as they are (far_), as the solver gathered them";
 }
+
+TEST(Ex13_5_GatherAtAPoint, APartlyHiddenLinkIsReadAsThePointSeesIt) {
+  // The floor under a glowing ceiling 1 up, a black panel at height 1/2 over x < 0.45;
+  // the floor's link from the ceiling made by hand with V = 1/2 (a shadow's edge inside).
+  // From x = 0.95 the whole ceiling is in view, from x = 0.02 none of it.
+  const gi::Surface floor{"floor", {vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0), vec3(0, 1, 0)}, rho};
+  const gi::Surface light{"ceiling", {vec3(0, 0, 1), vec3(0, 1, 1), vec3(1, 1, 1), vec3(1, 0, 1)}, Color(0.0), Color(E)};
+  const gi::Surface panel{"panel", {vec3(-0.5, -0.5, 0.5), vec3(-0.5, 1.5, 0.5), vec3(0.45, 1.5, 0.5), vec3(0.45, -0.5, 0.5)},
+                          Color(0.0)};
+  gi::Hierarchy h = gi::make_hierarchy({floor, light, panel});
+  h.nodes[1].B = Color(E);
+  const double F = gi::ff_parallel_rectangles(1, 1, 1);
+  gi::Link link{0, 1, F, F, 0.5};
+  link.F_min = 0.1f, link.F_max = 0.25f;
+  h.nodes[0].links.push_back(link);
+  const gi::LinkGather gather(h);
+  double F_open = 0;  // F from (0.95, 0.5) to the ceiling: four rectangles with a corner above it
+  for (const double a : {0.95, 0.05})
+    for (const double b : {0.5, 0.5}) F_open += gi::ff_point_to_parallel_rectangle_corner(a, b, 1);
+  EXPECT_NEAR(gather.at(0, vec3(0.95, 0.5, 0)).x, rho.x * E * F_open, 1e-9)
+      << "a link with a shadow's edge inside (0 < V < 1) is read as x sees the source: take its light from "
+         "light_at(link, leaf, x), not link_light (the link's one V for the whole floor)";
+  EXPECT_EQ(gather.at(0, vec3(0.02, 0.5, 0)).x, 0.0) << "from under the panel the ceiling is hidden: light_at says so";
+}
+

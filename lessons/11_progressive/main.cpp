@@ -6,6 +6,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -75,6 +76,10 @@ void watch_the_shots(const Box& box, const gi::ShooterRow& row, const gi::Shoote
   converge.tolerance = 1e-4;
   converge.max_steps = 1'000'000;
   const gi::SolverResult reference = gi::solve_progressive(box.system, box.mesh, kept_row, converge);
+  // Without a converged answer the error column would measure against garbage.
+  if (reference.status != gi::SolveStatus::Converged)
+    throw std::runtime_error("no converged answer to measure the error against: shooting to 1e-4 unshot energy " +
+                             gi::stop_reason(reference, "shot"));
 
   gi::Table table("Progressive refinement, " + std::to_string(box.mesh.patches.size()) + " patches, " +
                       std::to_string(box.mesh.elements.size()) + " elements (error against the converged answer)",
@@ -127,6 +132,8 @@ void time_to_one_percent(const gi::RadiosityScene& scene, int elements, const gi
   const gi::Timer timer;
   const gi::SolverResult fast =
       gi::solve_progressive(fine.system, fine.mesh, gi::patch_shooter(fine.receivers, fine.mesh, hemicube), one_percent);
+  if (fast.status != gi::SolveStatus::Converged)
+    throw std::runtime_error("the timing to 1% unshot energy: shooting " + gi::stop_reason(fast, "shot"));
   lesson.say("\n" + std::to_string(fine.mesh.elements.size()) + " elements in " +
              std::to_string(fine.mesh.patches.size()) + " patches: " + std::to_string(fast.history.size()) +
              " shots to 1% unshot energy in " + gi::format_number(timer.seconds(), 2, gi::Format::Fixed) +

@@ -86,6 +86,44 @@ TEST(LinkGather, AFarLinkIsTheSolversConstant) {
     EXPECT_NEAR(gather.at(0, x).x, run.hierarchy.nodes[0].gathered.x, 1e-15);
 }
 
+TEST(LinkGather, APartlyHiddenLinkIsReadWithTheVisibilityOfThePoint) {
+  // The floor under a glowing ceiling 1 up, and between them, at height 1/2, a black
+  // panel over x < 0.45 (facing the floor, rho = 0: it sends nothing). The floor's one
+  // link to the ceiling is partly hidden (V near a half), one number for the floor. At
+  // x = 0.95 every ray of the gather reaches the ceiling: the light is the point's whole
+  // view of it, rho E F(x -> ceiling), F the point-to-parallel-rectangle factor. At
+  // x = 0.02 the panel hides all of them: nothing. The link's one V gave both the same
+  // half (0.45 and 0.55 of it).
+  const gi::Surface floor{"floor", {vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, 1, 0), vec3(0, 1, 0)}, Color(rho)};
+  const gi::Surface light{"ceiling", {vec3(0, 0, 1), vec3(0, 1, 1), vec3(1, 1, 1), vec3(1, 0, 1)}, Color(0.0), Color(E)};
+  const gi::Surface panel{"panel", {vec3(-0.5, -0.5, 0.5), vec3(-0.5, 1.5, 0.5), vec3(0.45, 1.5, 0.5), vec3(0.45, -0.5, 0.5)},
+                          Color(0.0)};
+  gi::HierarchicalSettings s;
+  s.refinement.min_area = 1;
+  const gi::HierarchicalRun run = gi::run_hierarchical({"shaded floor", {floor, light, panel}, {}}, s, 1);
+  const gi::Node& floor_node = run.hierarchy.nodes[0];
+  const gi::Link* to_light = nullptr;
+  for (const gi::Link& link : floor_node.links)
+    if (link.source == 1) to_light = &link;
+  ASSERT_NE(to_light, nullptr);
+  ASSERT_GT(to_light->visibility, 0.2);
+  ASSERT_LT(to_light->visibility, 0.8);
+  const gi::LinkGather gather(run.hierarchy);
+  const vec3 open(0.95, 0.5, 0), shaded(0.02, 0.5, 0);
+  // F(x -> ceiling): the ceiling cut at the foot of x's normal into four rectangles.
+  const auto F = [](double x, double y) {
+    double sum = 0;
+    for (const double a : {x, 1 - x})
+      for (const double b : {y, 1 - y}) sum += gi::ff_point_to_parallel_rectangle_corner(a, b, 1);
+    return sum;
+  };
+  EXPECT_NEAR(gather.light_at(*to_light, 0, open).x, to_light->F * E, 1e-15);  // F_l V B with V = 1 there
+  EXPECT_NEAR(gather.at(0, open).x, rho * E * F(0.95, 0.5), 1e-12);
+  EXPECT_EQ(gather.at(0, shaded).x, 0.0);
+  // What the link hands the whole floor lies between the two.
+  EXPECT_GT(floor_node.gathered.x, 0.2 * gather.at(0, open).x);
+}
+
 TEST(LinkGather, VerticesHaveNoCracksAndTheSameValuesOnAnyThreads) {
   gi::HierarchicalSettings s;
   s.exact_direct = true;

@@ -211,6 +211,18 @@ TEST(Solvers, ASingularSystemSaysSoWithOneHistoryRow) {
   EXPECT_EQ(gi::stop_reason(r, "step"), "singular after 1 step");
 }
 
+TEST(Solvers, ARoomThatReflectsEverythingIsSingularDespiteRoundOff) {
+  // Seven elements, F_ij = 1/6 (not exact in binary), rho = 1: the rows of K sum to
+  // round-off, not 0, and elimination meets a pivot of ~1e-16 rather than 0. Dividing
+  // by it made a B of ~1e16 reported as "stopped at the limit". Rho just below 1 is
+  // nearly singular, not singular: B = E / (1 - rho) exactly as the closed form says.
+  const gi::SolverResult r = gi::solve_direct(furnace(7, 1.0, 1.0));
+  EXPECT_EQ(r.status, gi::SolveStatus::Singular);
+  const gi::SolverResult near = gi::solve_direct(furnace(7, 1 - 1e-6, 1.0));
+  ASSERT_EQ(near.status, gi::SolveStatus::Converged);
+  for (const Color& B : near.B) EXPECT_NEAR(B.x, 1e6, 1e6 * 1e-7);
+}
+
 TEST(Solvers, HistoriesEndWhereTheSolverStopped) {
   // No interreflection (F = 0): one iteration reaches B = E exactly, residual 0, so a
   // solver asked for 30 iterations with tolerance 0 stops after 1, converged.

@@ -1,6 +1,7 @@
 // The syntax layer of the scene reader: values, their positions, and one test per
 // message, the whole line compared.
 #include "gi/scene/json.hpp"
+#include "gi/scene/utf8.hpp"
 
 #include <gtest/gtest.h>
 
@@ -115,4 +116,14 @@ TEST(Json, LimitsStopHostileFilesBeforeTheyCostTimeOrMemory) {
   for (int i = 1; i < 1'000'000; ++i) zeros += ",0";
   EXPECT_EQ(error_of(zeros + "]"), "f.json:1:2000000: more than 1000000 values; put large meshes in an OBJ file "
                                    "(\"meshes\")");
+}
+
+TEST(Json, MessagesQuoteInputAsOnePrintableLine) {
+  // printable: UTF-8 characters stay, control characters and stray bytes become \xNN.
+  EXPECT_EQ(gi::printable("caf\xC3\xA9 \xF0\x9F\x98\x80"), "caf\xC3\xA9 \xF0\x9F\x98\x80");
+  EXPECT_EQ(gi::printable(std::string("a\nb\0c\x1b[1m\x7f\xFF\xC3", 12)), "a\\x0ab\\x00c\\x1b[1m\\x7f\\xff\\xc3");
+  // A name that a JSON escape filled with a newline and a NUL: the error is one line,
+  // and the NUL no longer ends it (what() is a C string).
+  const gi::SceneError e({"f.json", 3, 7, "materials[0]"}, "no material is named 'a\nb" + std::string(1, '\0') + "c'");
+  EXPECT_EQ(std::string(e.what()), "f.json:3:7: materials[0]: no material is named 'a\\x0ab\\x00c'");
 }

@@ -78,6 +78,12 @@ TEST(ObjFile, EveryErrorNamesLineAndColumn) {
       {square + "curv 0 1 1 2\n", "m.obj:5:1: 'curv' is not a statement this reader knows (v, f, usemtl; vt, vn, "
                                   "mtllib, o, g, s are skipped): export triangles and quadrilaterals only"},
       {"v 0 0 0\n\xE9t\xE9\n", "m.obj:2:1: the file is not UTF-8 text"},
+      // Binary junk: the NUL would have ended the message inside its quote of the word.
+      {std::string("v 0 0 0\n\x01\0\xC3\xBF junk\n", 17), "m.obj:2:1: a control character (code 1): the file is not OBJ text"},
+      {square + "f 1 2\x1b[31m 3\n", "m.obj:5:6: a control character (code 27): the file is not OBJ text"},
+      {square + "usemtl caf\xC3\xA9\r\nf 1 2 3\r\nx\xC3\xA9\r\n",
+       "m.obj:7:1: 'x\xC3\xA9' is not a statement this reader knows (v, f, usemtl; vt, vn, mtllib, o, g, s are "
+       "skipped): export triangles and quadrilaterals only"},  // CR and UTF-8 are text
   };
   for (const auto& [text, message] : cases) EXPECT_EQ(error_of(text), message) << "file:\n" << text;
 }

@@ -242,21 +242,25 @@ FastBvh make_fast_bvh(const Bvh& bvh, const Scene& scene) {
           current = child(node, c, s.t_enter[c]);
           continue;
         }
-        // Several: pushed in order of entry, the nearest last, then taken back off
-        // below. Insertion slides those entered no later up by one (on a tie the
-        // child with the lower index goes first, as the plain walk's left child does).
+        // Several: the nearest goes on at once, the others onto the stack in order of
+        // entry, the farthest lowest (insertion slides those entered no later up by
+        // one). On a tie the child with the lower index goes first, as the plain walk's
+        // left child does.
+        int nearest_child = c;
         const int first = size;
-        for (;;) {
+        do {
+          int k = std::countr_zero(hits);
+          hits &= hits - 1;
+          if (s.t_enter[k] < s.t_enter[nearest_child]) std::swap(k, nearest_child);
           int at = size++;
-          while (at > first && stack[at - 1].t_enter <= s.t_enter[c]) {
+          while (at > first && stack[at - 1].t_enter <= s.t_enter[k]) {
             stack[at] = stack[at - 1];
             --at;
           }
-          stack[at] = child(node, c, s.t_enter[c]);
-          if (hits == 0) break;
-          c = std::countr_zero(hits);
-          hits &= hits - 1;
-        }
+          stack[at] = child(node, k, s.t_enter[k]);
+        } while (hits != 0);
+        current = child(node, nearest_child, s.t_enter[nearest_child]);
+        continue;
       }
     }
     while (size > 0 && stack[size - 1].t_enter > ray.t_max) --size;

@@ -91,7 +91,9 @@ vec3 bilinear(const std::array<vec3, 4>& c, double s, double t) {
 }
 
 // (s, t) with bilinear(c, s, t) = p for a point p of a flat convex quadrilateral, by
-// Newton's method from the middle: the map is nearly affine, three steps suffice.
+// Newton's method from the middle: the map is nearly affine, three steps suffice, and
+// the loop stops once a step moves (s, t) by less than 1e-12 (a parallelogram's map is
+// affine: its first step lands, its second only confirms).
 vec2 unbilinear(const std::array<vec3, 4>& c, const vec3& n, const vec3& p) {
   vec2 st(0.5, 0.5);
   for (int step = 0; step < 4; ++step) {
@@ -101,7 +103,9 @@ vec2 unbilinear(const std::array<vec3, 4>& c, const vec3& n, const vec3& p) {
     // Solve [ds dt] (delta) = r in the plane: Cramer with the normal.
     const double det = dot(cross(ds, dt), n);
     if (std::abs(det) < 1e-300) break;
-    st -= vec2(dot(cross(r, dt), n), dot(cross(ds, r), n)) / det;
+    const vec2 step_st = vec2(dot(cross(r, dt), n), dot(cross(ds, r), n)) / det;
+    st -= step_st;
+    if (std::abs(step_st.x) + std::abs(step_st.y) < 1e-12) break;  // converged: the next step moves round-off
   }
   return glm::clamp(st, 0.0, 1.0);
 }

@@ -1,5 +1,6 @@
 #include "gi/radiosity/solvers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -19,11 +20,19 @@ SolverResult solve_direct(const RadiositySystem& s, const SolverOptions& options
       for (int j = 0; j < n; ++j) k(i, j) = (i == j) - s.rho[i][channel] * s.F(i, j);
       k(i, n) = s.emission[i][channel];
     }
+    // Singular where a pivot is round-off of the matrix's size: a closed room whose
+    // every surface reflects all it receives (rho = 1, rows of F summing to 1) gives
+    // pivots of 1e-15, not 0, and dividing by them made a B of 1e15 that was not an
+    // answer. An honest nearly singular room (rho = 0.999999) has pivots of 1e-6.
+    double largest = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) largest = std::max(largest, std::abs(k(i, j)));
+    const double negligible = 1e-12 * n * largest;
     for (int column = 0; column < n; ++column) {
       int pivot = column;  // the largest entry below, for stability
       for (int i = column + 1; i < n; ++i)
         if (std::abs(k(i, column)) > std::abs(k(pivot, column))) pivot = i;
-      if (std::abs(k(pivot, column)) < 1e-300) return monitor.fail(SolveStatus::Singular, 1);
+      if (!(std::abs(k(pivot, column)) > negligible)) return monitor.fail(SolveStatus::Singular, 1);
       for (int j = column; j <= n; ++j) std::swap(k(column, j), k(pivot, j));
       for (int i = column + 1; i < n; ++i) {
         const double factor = k(i, column) / k(column, column);

@@ -16,6 +16,7 @@
 #include "gi/report/report_page.hpp"
 #include "gi/scene/builtin_scenes.hpp"
 #include "gi/scene/scene_file.hpp"
+#include "gi/scene/utf8.hpp"
 
 namespace gi {
 
@@ -28,11 +29,11 @@ int report_failure(const std::string& name, std::string& status) {
   try {
     throw;
   } catch (const SceneError& e) {  // "file:line:column: path: message" says it all
-    std::cerr << name << ": error: " << e.what() << '\n';
+    std::cerr << name << ": error: " << printable(e.what()) << '\n';
     status = std::string("bad input: ") + e.what();
     return 2;
   } catch (const OptionError& e) {
-    std::cerr << name << ": error: " << e.what() << " (try --help)\n";
+    std::cerr << name << ": error: " << printable(e.what()) << " (try --help)\n";
     status = std::string("bad input: ") + e.what();
     return 2;
   } catch (const NotImplemented& e) {
@@ -43,7 +44,7 @@ int report_failure(const std::string& name, std::string& status) {
     status = std::string("stopped: ") + e.what();
     return 3;
   } catch (const std::exception& e) {
-    std::cerr << name << ": error: " << e.what() << '\n';
+    std::cerr << name << ": error: " << printable(e.what()) << '\n';
     status = std::string("failed: ") + e.what();
     return 1;
   }
@@ -97,7 +98,7 @@ void Lesson::add_scene(std::string& choice, const std::vector<std::string>& name
     } catch (const std::invalid_argument& e) {  // an unknown name, a camera that cannot see
       throw OptionError(e.what());
     }
-    for (const std::string& w : warnings) std::cerr << name_ << ": warning: " << w << '\n';
+    for (const std::string& w : warnings) std::cerr << name_ << ": warning: " << printable(w) << '\n';
   });
 }
 
@@ -165,7 +166,7 @@ int Lesson::run(int argc, const char* const* argv, const std::function<void()>& 
       try {
         (this->*write)(status);
       } catch (const std::exception& e) {
-        if (code == 0) std::cerr << name_ << ": error: " << e.what() << '\n';
+        if (code == 0) std::cerr << name_ << ": error: " << printable(e.what()) << '\n';
         if (code == 0) code = 1;
       }
     }

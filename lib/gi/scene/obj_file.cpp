@@ -48,6 +48,15 @@ class ObjReader {
   void line(std::string_view text) {
     ++line_;
     if (int bad = 0; !is_utf8(text, &bad)) fail(bad, "", "the file is not UTF-8 text");
+    // Nor is a control character text (tab and a Windows line end's CR aside); quoted
+    // in the message about an unknown statement, a NUL would have cut the line short.
+    int column = 1;
+    for (const char c : text) {
+      const auto code = static_cast<unsigned char>(c);
+      if (code < 0x20 && c != '\t' && c != '\r')
+        fail(column, "", "a control character (code " + std::to_string(code) + "): the file is not OBJ text");
+      column += (code & 0xC0) != 0x80;
+    }
     const std::vector<Word> w = words(text);
     if (w.empty()) return;
     const std::string_view keyword = w[0].text;

@@ -222,6 +222,8 @@ class SceneReader {
     const fs::path file = path_.parent_path() / relative;
     std::error_code error;
     if (!fs::exists(file, error)) schema_.fail(*f["file"], path + ".file", "no such file: " + shown);
+    // Before its size: a folder or a device has none (file_size fails, or /dev/zero never ends).
+    if (!fs::is_regular_file(file, error)) schema_.fail(*f["file"], path + ".file", "not a file one can read a mesh from: " + shown);
     const ObjLimits most;
     mesh_bytes_ += fs::file_size(file, error);
     if (mesh_bytes_ > most.max_bytes)

@@ -48,4 +48,20 @@ bool is_utf8(std::string_view text, int* bad_column) {
   return true;
 }
 
+std::string printable(std::string_view text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    if (const std::size_t n = utf8_length(text, i); n > 1 || (n == 1 && byte >= 0x20 && byte != 0x7F)) {
+      out.append(text.substr(i, n));
+      i += n;
+      continue;
+    }
+    constexpr char hex[] = "0123456789abcdef";
+    out += {'\\', 'x', hex[byte >> 4], hex[byte & 15]};
+    ++i;
+  }
+  return out;
+}
+
 }  // namespace gi

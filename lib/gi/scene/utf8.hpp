@@ -19,4 +19,10 @@ void append_utf8(std::string& out, unsigned code);
 // the first byte that is not.
 bool is_utf8(std::string_view text, int* bad_column = nullptr);
 
+// The text as one readable line, for a message that quotes input (a name from a scene
+// file, a word of a mesh file, an option's value): control characters, which would cut
+// or split the line or drive the terminal, and bytes that are not UTF-8 are written
+// \xNN; UTF-8 characters stay as they are.
+std::string printable(std::string_view text);
+
 }  // namespace gi

@@ -7,16 +7,6 @@
 
 namespace gi {
 
-namespace {
-
-std::vector<Polygon> surface_shapes(const Hierarchy& h) {
-  std::vector<Polygon> shapes;
-  for (std::size_t s = 0; s < h.surfaces.size(); ++s) shapes.push_back(h.nodes[s].shape);  // the roots
-  return shapes;
-}
-
-}  // namespace
-
 HierarchicalRun run_hierarchical(const RadiosityScene& scene, const HierarchicalSettings& settings, int threads) {
   check(settings);
   Hierarchy hierarchy = make_hierarchy(scene.surfaces);

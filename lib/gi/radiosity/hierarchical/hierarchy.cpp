@@ -54,12 +54,21 @@ void split(Hierarchy& h, int index) {
 }
 
 vec3 lifted_point(const Hierarchy& h, const Node& node, double u, double v) {
-  const vec3 p = node_point(h, node, u, v);
-  const Polygon& surface = h.nodes[node.surface].shape;  // the root: the whole surface
+  return lifted(h, node.surface, node_point(h, node, u, v));
+}
+
+vec3 lifted(const Hierarchy& h, int surface, const vec3& p) {
+  const Polygon& shape = h.nodes[surface].shape;  // the root: the whole surface
   // Cached by make_hierarchy; a hierarchy put together by hand has no cache.
-  const std::size_t s = static_cast<std::size_t>(node.surface);
-  const double up = s < h.lifts.size() ? h.lifts[s] : lift(surface);
-  return p + (up - dot(p - surface.centre, surface.normal)) * surface.normal;
+  const std::size_t s = static_cast<std::size_t>(surface);
+  const double up = s < h.lifts.size() ? h.lifts[s] : lift(shape);
+  return p + (up - dot(p - shape.centre, shape.normal)) * shape.normal;
+}
+
+std::vector<Polygon> surface_shapes(const Hierarchy& h) {
+  std::vector<Polygon> shapes;
+  for (std::size_t s = 0; s < h.surfaces.size(); ++s) shapes.push_back(h.nodes[s].shape);  // the roots
+  return shapes;
 }
 
 int leaf_containing(const Hierarchy& h, int surface, double s, double t) {

@@ -65,6 +65,11 @@ vec3 node_point(const Hierarchy& hierarchy, const Node& node, double u, double v
 // surface's lifted centre (polygon.hpp; a no-op on a flat surface): where shadow rays
 // start, so that a twisted surface never hides its own points.
 vec3 lifted_point(const Hierarchy& hierarchy, const Node& node, double u, double v);
+// Any point p of surface `surface` moved so.
+vec3 lifted(const Hierarchy& hierarchy, int surface, const vec3& p);
+
+// The input surfaces' polygons (the roots' shapes): what shadow rays are cast against.
+std::vector<Polygon> surface_shapes(const Hierarchy& hierarchy);
 
 // The leaf of surface `surface` that holds the point (s, t) of the surface's
 // parameter square (bilinear's), found by walking down from the root: at level l the

@@ -1,6 +1,8 @@
 #include "gi/radiosity/hierarchical/link_estimate.hpp"
 
 #include <algorithm>
+#include <array>
+#include <span>
 
 #include "gi/radiosity/form_factor_formulas.hpp"
 #include "gi/radiosity/hierarchical/exposure.hpp"
@@ -42,19 +44,20 @@ Link estimate_form_factors(const Hierarchy& h, int receiver, int source, int ord
   // link judged by its inner points alone handed a face's foot a hundredth of its view
   // of the floor there (the blocks came out dark, docs/13). Points set in by
   // corner_inset of the receiver's size, where F is finite.
-  std::vector<vec2> look_at;
-  look_at.reserve(9);
+  std::array<vec2, 9> look_at;  // on the stack: a link is judged a million times
+  std::size_t looks = 0;
   const auto look = [&](vec2 st) {
     st = glm::clamp(st, corner_inset, 1 - corner_inset);
     // A far source's feet all clamp to the receiver's corners and edges: each point once.
-    if (std::find(look_at.begin(), look_at.end(), st) == look_at.end()) look_at.push_back(st);
+    if (std::find(look_at.begin(), look_at.begin() + looks, st) == look_at.begin() + looks) look_at[looks++] = st;
   };
   for (const double u : {0.0, 1.0})
     for (const double v : {0.0, 1.0}) look({u, v});
   for (const vec3& c : {q.corners[0], q.corners[1], q.corners[2], q.corners[3], q.centre})
     look(unbilinear(p.corners, p.normal, c - dot(c - p.centre, p.normal) * p.normal));
-  const FormFactorRange F = form_factor_analytic_range(
-      p, q, order, node.open == 0xFFFF ? std::function<bool(double, double)>{} : open, look_at);
+  const FormFactorRange F = analytic_range_unchecked(
+      p, q, order, node.open == 0xFFFF ? std::function<bool(double, double)>{} : open,
+      std::span<const vec2>(look_at.data(), looks));
   Link link{receiver, source, F.mean, F.mean * p.area / q.area, 0.0};  // F_qp by reciprocity: A_p F_pq = A_q F_qp
   link.F_min = static_cast<float>(F.least), link.F_max = static_cast<float>(F.greatest);
   return link;
