@@ -18,7 +18,7 @@ namespace gi {
 // and F(x -> q_l) the exact point-to-polygon factor (form_factor_formulas.hpp). A link
 // spreads its light evenly over its receiver; here the light follows F, rising towards
 // a crease where the receiver meets its source as it does in the scene, however large
-// the receiver. Only F is new: V and B are the solution's.
+// the receiver. B is the solution's; F, and for a partly hidden link V (below), are x's.
 //
 // A link whose F changes little over its receiver (F_max <= near_spread F_min) is
 // taken as it is: F(x) / F_l is then within its spread of 1, and its light counts once
