@@ -20,22 +20,26 @@ Color link_light(const Hierarchy& h, const Link& link) {
   return sum;
 }
 
+namespace {
+
+// Some of the link's shadow rays got through and some did not.
+bool shadow_edge_inside(const Link& link) { return link.visibility > 0 && link.visibility < 1; }
+
+}  // namespace
+
 LinkGather::LinkGather(const Hierarchy& h)
-    : hierarchy_(&h), blockers_(surface_shapes(h)), far_(h.nodes.size(), Color(0.0)), near_(h.nodes.size()), shafts_(h.nodes.size()) {
-  for (std::size_t n = 0; n < h.nodes.size(); ++n)
-    for (std::size_t k = 0; k < h.nodes[n].links.size(); ++k) {
-      const Link& link = h.nodes[n].links[k];
-      const bool shadow_edge = link.visibility > 0 && link.visibility < 1;
-      if (link.F > 0 && (link.F_max > near_spread * link.F_min || shadow_edge)) {
-        near_[n].push_back(static_cast<int>(k));
-      } else
-        far_[n] += link_light(h, link);
-    }
+    : hierarchy_(&h), blockers_(surface_shapes(h)), far_(h.nodes.size(), Color(0.0)), near_(h.nodes.size()),
+      shafts_(h.nodes.size()) {
   for (std::size_t n = 0; n < h.nodes.size(); ++n) {
     shafts_[n].resize(h.nodes[n].links.size());
-    for (int k : near_[n]) {
+    for (std::size_t k = 0; k < h.nodes[n].links.size(); ++k) {
       const Link& link = h.nodes[n].links[k];
-      if (!(link.visibility > 0 && link.visibility < 1)) continue;
+      if (!(link.F > 0 && (link.F_max > near_spread * link.F_min || shadow_edge_inside(link)))) {
+        far_[n] += link_light(h, link);
+        continue;
+      }
+      near_[n].push_back(static_cast<int>(k));
+      if (!shadow_edge_inside(link)) continue;
       // Every ray light_at casts for this link runs between the two nodes' lifted outlines.
       std::vector<vec3> corners;
       for (const int node : {link.receiver, link.source})
@@ -48,7 +52,7 @@ LinkGather::LinkGather(const Hierarchy& h)
 
 Color LinkGather::light_at(const Link& link, int leaf, const vec3& x) const {
   const Hierarchy& h = *hierarchy_;
-  if (!(link.visibility > 0 && link.visibility < 1)) return link_light(h, link);
+  if (!shadow_edge_inside(link)) return link_light(h, link);
   const Node& p = h.nodes[leaf];
   const Node& q = h.nodes[link.source];
   const vec3 from = lifted(h, p.surface, x);  // where the links' own shadow rays start
@@ -71,7 +75,8 @@ Color LinkGather::light_at(const Link& link, int leaf, const vec3& x) const {
     if (cos_p <= 0 || cos_q <= 0) continue;                                        // carries no light
     const double w = cos_p * cos_q / (dot(d, d) * dot(d, d));
     carrying += w;
-    if (shaft ? shaft->visible(from, to) : blockers_.visible(from, to)) through += w * (q.leaf() ? q.B : h.nodes[q.children[(s >= 0.5) + 2 * (t >= 0.5)]].B);
+    if (!(shaft ? shaft->visible(from, to) : blockers_.visible(from, to))) continue;
+    through += w * (q.leaf() ? q.B : h.nodes[q.children[(s >= 0.5) + 2 * (t >= 0.5)]].B);  // its quarter's B
   }
   return carrying > 0 ? link.F * through / carrying : link_light(h, link);
 }
