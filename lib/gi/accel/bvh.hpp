@@ -21,10 +21,18 @@ namespace gi {
 //           simple rule, for comparison.
 enum class Split { Sah, Median };
 
+// How the production walk (bvh_fast.hpp) makes the binary tree 8-wide (bvh_collapse.hpp).
+//   Sah           the wide tree of least SAH cost made of the binary tree's boxes; it
+//                 chooses the leaves too, so make_world builds the binary tree down
+//                 to one primitive a leaf for it
+//   LargestFirst  the binary tree's own leaves; the largest interior child opened first
+enum class WideCollapse { Sah, LargestFirst };
+
 struct BvhSettings {
   int max_leaf_size = 4;  // 1..255; a node with more primitives is always split
   int bins = 12;          // 2..256, for Split::Sah
   Split split = Split::Sah;
+  WideCollapse collapse = WideCollapse::Sah;  // for the fast walk only (make_world, make_fast_bvh)
 };
 
 // A primitive in the tree: which of the scene's vectors, and where in it. Indices

@@ -102,7 +102,13 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
   World world{std::move(scene), acceleration, {}, {}, {}, {}};
   if (acceleration == Acceleration::BruteForce) world.packed = pack(world.scene.spheres);
   if (acceleration == Acceleration::Bvh) world.bvh = build_bvh(world.scene, settings);
-  if (acceleration == Acceleration::FastBvh) world.fast_bvh = make_fast_bvh(build_bvh(world.scene, settings), world.scene);
+  if (acceleration == Acceleration::FastBvh) {
+    // The SAH collapse picks the leaves itself, from a binary tree cut down to one
+    // primitive a leaf; the largest-first collapse keeps the binary tree's leaves.
+    BvhSettings binary = settings;
+    if (settings.collapse == WideCollapse::Sah) binary.max_leaf_size = 1;
+    world.fast_bvh = make_fast_bvh(build_bvh(world.scene, binary), world.scene, settings);
+  }
   if (acceleration == Acceleration::BoundingBoxes) {
     world.boxes.reserve(world.scene.spheres.size() + world.scene.quads.size() + world.scene.triangles.size());
     for (const Sphere& sphere : world.scene.spheres) world.boxes.push_back(bounds(sphere));

@@ -17,8 +17,8 @@ namespace gi {
 //                  when its box is hit. Still N tests, but a box test is cheaper than
 //                  most objects' own
 //   Bvh            boxes around boxes (bvh.hpp): about log N tests per ray
-//   FastBvh        the same tree, walked by the production path (bvh_fast.hpp): 4-wide
-//                  nodes, four float slab tests at once
+//   FastBvh        the same boxes made an 8-wide tree (bvh_collapse.hpp), walked by the
+//                  production path (bvh_fast.hpp): float slab tests four at once
 // All four find the same hits.
 enum class Acceleration { BruteForce, BoundingBoxes, Bvh, FastBvh };
 
