@@ -172,7 +172,8 @@ TEST(BvhCollapse, TheSahCollapseIsTheCheapestOfEveryPlanOnSmallTrees) {
           const gi::WidePlan plan = gi::collapse_sah(bvh, max_leaf);
           check_plan(bvh, plan, max_leaf);
           EXPECT_NEAR(gi::sah_cost(bvh, plan), best, 1e-12 * best)
-              << n << " quads, seed " << seed << ", leaf " << leaf << ", max leaf " << max_leaf << ": " << plans << " plans";
+              << n << " quads, seed " << seed << ", leaf " << leaf << ", max leaf " << max_leaf << ": " << plans
+              << " plans";
         }
       }
   EXPECT_GT(most, 1000) << "the trees should offer plenty of plans";
@@ -187,7 +188,8 @@ TEST(BvhCollapse, BothCollapsesKeepEveryPrimitiveOnceInAWellShapedTree) {
     // The largest-first rule opens up to seven binary nodes into each wide one, and
     // here, with few leaves among the children, more than three on average.
     EXPECT_LE(3 * static_cast<std::size_t>(greedy), interior) << "leaf " << leaf;
-    EXPECT_GE(static_cast<std::size_t>(gi::wide_width - 1) * static_cast<std::size_t>(greedy), interior) << "leaf " << leaf;
+    EXPECT_GE(static_cast<std::size_t>(gi::wide_width - 1) * static_cast<std::size_t>(greedy), interior)
+        << "leaf " << leaf;
     for (const int max_leaf : {1, 4, 8}) check_plan(bvh, gi::collapse_sah(bvh, max_leaf), max_leaf);
   }
 }

@@ -57,7 +57,8 @@ struct SahCollapse {
         if (left[k] + right[j - k] < cost[j]) cost[j] = left[k] + right[j - k], c.left[j] = static_cast<std::int8_t>(k);
     }
     const double as_node = a * wide_node_cost + cost[wide_width];
-    const double as_leaf = c.count <= max_leaf_size ? a * wide_primitive_cost * c.count : std::numeric_limits<double>::infinity();
+    const double as_leaf =
+        c.count <= max_leaf_size ? a * wide_primitive_cost * c.count : std::numeric_limits<double>::infinity();
     c.leaf = as_leaf <= as_node;
     cost[1] = std::min(as_leaf, as_node);
     return cost;
@@ -94,8 +95,10 @@ std::int32_t plan_largest_first(const Bvh& bvh, std::int32_t n, WidePlan& plan) 
   while (size < wide_width) {
     int open = -1;
     double largest = -1;
-    for (int c = 0; c < size; ++c)
-      if (node_at(bvh, children[c]).count == 0 && area(bvh, children[c]) > largest) open = c, largest = area(bvh, children[c]);
+    for (int c = 0; c < size; ++c) {
+      const double a = area(bvh, children[c]);
+      if (node_at(bvh, children[c]).count == 0 && a > largest) open = c, largest = a;
+    }
     if (open < 0) break;  // all leaves
     const std::int32_t opened = children[open];
     children[open] = opened + 1;

@@ -24,9 +24,11 @@ void lay_out(const Bvh& bvh, const WidePlan& plan, FastBvh& fast) {
     for (int c = 0; c < width; ++c) {
       const bool used = c < plan[w].size;
       const WideChild& child = plan[w].child[static_cast<std::size_t>(c)];
+      const BvhNode& binary = bvh.nodes[static_cast<std::size_t>(used ? child.node : 0)];
+      constexpr float inf = std::numeric_limits<float>::infinity();
       for (int axis = 0; axis < 3; ++axis) {
-        node.bounds[2 * axis][c] = used ? bvh.nodes[static_cast<std::size_t>(child.node)].lo[axis] : std::numeric_limits<float>::infinity();
-        node.bounds[2 * axis + 1][c] = used ? bvh.nodes[static_cast<std::size_t>(child.node)].hi[axis] : -std::numeric_limits<float>::infinity();
+        node.bounds[2 * axis][c] = used ? binary.lo[axis] : inf;
+        node.bounds[2 * axis + 1][c] = used ? binary.hi[axis] : -inf;
       }
       node.index[c] = used ? child.index : -1;
       node.count[c] = used ? child.count : 0;
@@ -185,7 +187,8 @@ FastBvh make_fast_bvh(const Bvh& bvh, const Scene& scene, const BvhSettings& set
     plan[0].child[0] = {0, bvh.nodes[0].offset, bvh.nodes[0].count};
     plan[0].size = 1;
   } else {
-    plan = settings.collapse == WideCollapse::Sah ? collapse_sah(bvh, settings.max_leaf_size) : collapse_largest_first(bvh);
+    plan = settings.collapse == WideCollapse::Sah ? collapse_sah(bvh, settings.max_leaf_size)
+                                                  : collapse_largest_first(bvh);
   }
   lay_out(bvh, plan, fast);
   return fast;
