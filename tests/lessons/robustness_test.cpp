@@ -34,6 +34,9 @@ std::size_t count(const std::string& text, const std::string& what) {
 // Every PNG and PFM in `folder` reads back whole; returns how many there were.
 int check_every_image(const fs::path& folder) {
   int images = 0;
+  // A run killed before it made its folder (early, on a loaded machine or under the
+  // sanitizers) has written nothing, half or whole.
+  if (!fs::exists(folder)) return images;
   for (const auto& entry : fs::directory_iterator(folder)) {
     const fs::path& file = entry.path();
     if (gi::is_partial_file(file)) continue;
