@@ -34,10 +34,10 @@ using WidePlan = std::vector<WideNode>;
 // The cost model the SAH collapse minimises, in units of one visit to a wide node: a
 // ray that reaches a wide node, with probability A_node / A_root, tests its eight
 // boxes (C_wide); one that reaches a leaf tests its N primitives (N C_prim). A quad
-// test runs more instructions than a visit (about 140 against 100) but takes less
-// time: the visits wait on each other, one node's test choosing the next node, while
-// a leaf's quads are tested side by side, and fewer, larger leaves make a smaller tree
-// that stays in cache. Timed on quad_room's camera and random rays at 10 000 and
+// test runs more instructions than a test of four boxes (about 140 against 50, counted
+// by callgrind on the four-wide walk, docs/05) but takes less time: the visits wait on
+// each other, one node's test choosing the next node, while a leaf's quads are tested
+// side by side, and fewer, larger leaves make a smaller tree that stays in cache. Timed on quad_room's camera and random rays at 10 000 and
 // 100 000 quads with C_prim from 0.2 to 1: 0.3 was among the fastest at 10 000 and
 // clearly fastest at 100 000 (random nearest hits 0.86 of Embree's speed against 0.72
 // at 0.5; docs/05).
