@@ -1,5 +1,5 @@
 // Reading the lesson's data: window.GI_VIEWER_DATA, set by viewer_data.js, which the
-// lesson writes beside this page (its format: lib/gi/radiosity/viewer_data.hpp).
+// lesson writes beside this page (its format: lib/gi/viewer/data.hpp).
 // Numbers come as typed arrays, base64 of little-endian 32-bit values; the
 // browsers this page runs on are all little-endian, so the bytes are used as they are.
 "use strict";

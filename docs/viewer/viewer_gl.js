@@ -1,5 +1,5 @@
 // Drawing the radiosity mesh with WebGL2, as the lessons' display does
-// (lib/gi/radiosity/display.hpp): every element a quadrilateral showing the radiance
+// (lib/gi/radiosity/display/display.hpp): every element a quadrilateral showing the radiance
 // L = B / pi, times the exposure, clamped to [0, 1] and sRGB-encoded.
 //   flat    each element one colour, its own B
 //   smooth  Gouraud's: each vertex the area-weighted mean of the elements that share

@@ -4,8 +4,8 @@
 #include <array>
 #include <cmath>
 
-#include "gi/radiosity/configuration_factors.hpp"
-#include "gi/radiosity/form_factor_formulas.hpp"
+#include "gi/radiosity/form_factors/configuration_factors.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
 #include "support/print.hpp"
 
 using gi::vec3;

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "gi/radiosity/form_factor_matrix.hpp"
+#include "gi/radiosity/system/form_factor_matrix.hpp"
 #include "support/print.hpp"
 
 namespace {

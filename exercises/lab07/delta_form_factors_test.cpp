@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "gi/radiosity/hemicube.hpp"
+#include "gi/radiosity/form_factors/hemicube.hpp"
 #include "support/print.hpp"
 
 namespace {

@@ -2,7 +2,7 @@
 // per test.
 #include <gtest/gtest.h>
 
-#include "gi/radiosity/hemicube.hpp"
+#include "gi/radiosity/form_factors/hemicube.hpp"
 #include "support/print.hpp"
 
 using gi::HemicubeFace;

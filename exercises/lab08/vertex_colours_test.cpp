@@ -1,8 +1,8 @@
 // Graded tests of exercise 8.1: vertex colours from element radiosities. One point per test.
 #include <gtest/gtest.h>
 
-#include "gi/radiosity/radiosity_scenes.hpp"
-#include "gi/radiosity/vertex_colours.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
+#include "gi/radiosity/display/vertex_colours.hpp"
 #include "support/print.hpp"
 
 using gi::Color;

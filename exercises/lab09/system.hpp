@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/system/solvers.hpp"
 
 namespace lab09 {
 

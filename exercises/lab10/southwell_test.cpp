@@ -2,7 +2,7 @@
 // update. One point per test.
 #include <gtest/gtest.h>
 
-#include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/system/solvers.hpp"
 #include "support/print.hpp"
 
 using gi::Color;

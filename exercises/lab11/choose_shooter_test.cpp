@@ -1,7 +1,7 @@
 // Graded tests of exercise 11.3: choosing the shooter. One point per test.
 #include <gtest/gtest.h>
 
-#include "gi/radiosity/progressive.hpp"
+#include "gi/radiosity/system/progressive.hpp"
 #include "support/print.hpp"
 
 using gi::Color;

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <utility>
 
-#include "gi/radiosity/progressive.hpp"
+#include "gi/radiosity/system/progressive.hpp"
 #include "support/print.hpp"
 
 using gi::Color;

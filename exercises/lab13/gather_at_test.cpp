@@ -1,7 +1,7 @@
 // Graded tests of exercise 13.5 (gathering at a point: the final gather). One point per test.
 #include <gtest/gtest.h>
 
-#include "gi/radiosity/configuration_factors.hpp"
+#include "gi/radiosity/form_factors/configuration_factors.hpp"
 #include "gi/radiosity/hierarchical/link_gather.hpp"
 #include "support/print.hpp"
 

@@ -2,7 +2,7 @@
 // One point per test.
 #include <gtest/gtest.h>
 
-#include "gi/radiosity/vertex_colours.hpp"
+#include "gi/radiosity/display/vertex_colours.hpp"
 #include "room.hpp"
 #include "support/print.hpp"
 

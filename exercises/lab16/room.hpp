@@ -6,7 +6,7 @@
 #include <functional>
 #include <vector>
 
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/twopass/eye_world.hpp"
 #include "gi/twopass/handoff.hpp"
 

@@ -16,8 +16,8 @@
 #include "gi/core/math.hpp"
 #include "gi/core/ray.hpp"
 #include "gi/geometry/aabb.hpp"
-#include "gi/radiosity/hemicube.hpp"
-#include "gi/radiosity/solver.hpp"
+#include "gi/radiosity/form_factors/hemicube.hpp"
+#include "gi/radiosity/system/solver.hpp"
 #include "gi/raytrace/pixel_samplers.hpp"
 #include "gi/raytrace/soft_shadows.hpp"
 

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "gi/core/timer.hpp"
-#include "gi/radiosity/configuration_factors.hpp"
-#include "gi/radiosity/form_factor_adaptive.hpp"
-#include "gi/radiosity/form_factor_formulas.hpp"
-#include "gi/radiosity/item_buffer.hpp"
-#include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/form_factors/configuration_factors.hpp"
+#include "gi/radiosity/form_factors/form_factor_adaptive.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
+#include "gi/radiosity/form_factors/item_buffer.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"

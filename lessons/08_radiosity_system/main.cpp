@@ -10,12 +10,12 @@
 
 #include "gi/core/timer.hpp"
 #include "gi/image/diff.hpp"
-#include "gi/radiosity/display.hpp"
-#include "gi/radiosity/radiosity_scene_file.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
-#include "gi/radiosity/solvers.hpp"
-#include "gi/radiosity/vertex_colours.hpp"
-#include "gi/radiosity/viewer_demos.hpp"
+#include "gi/radiosity/display/display.hpp"
+#include "gi/radiosity/mesh/radiosity_scene_file.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
+#include "gi/radiosity/system/solvers.hpp"
+#include "gi/radiosity/display/vertex_colours.hpp"
+#include "gi/viewer/demos.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"
 

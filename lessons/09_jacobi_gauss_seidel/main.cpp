@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "gi/core/timer.hpp"
-#include "gi/radiosity/form_factor_hemicube.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
-#include "gi/radiosity/solvers.hpp"
-#include "gi/radiosity/viewer_demos.hpp"
+#include "gi/radiosity/form_factors/form_factor_hemicube.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
+#include "gi/radiosity/system/solvers.hpp"
+#include "gi/viewer/demos.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"

@@ -14,13 +14,13 @@
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/direct_display.hpp"
+#include "gi/radiosity/display/direct_display.hpp"
 #include "gi/radiosity/hierarchical/hierarchical_run.hpp"
 #include "gi/radiosity/hierarchical/link_gather.hpp"
-#include "gi/radiosity/picture_error.hpp"
+#include "gi/radiosity/display/picture_error.hpp"
 #include "gi/radiosity/recipe.hpp"
-#include "gi/radiosity/vertex_colours.hpp"
-#include "gi/radiosity/viewer_hierarchy.hpp"
+#include "gi/radiosity/display/vertex_colours.hpp"
+#include "gi/viewer/hierarchical.hpp"
 #include "gi/report/lesson.hpp"
 
 namespace {

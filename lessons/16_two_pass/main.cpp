@@ -13,7 +13,7 @@
 #include "gi/image/diff.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/display.hpp"
+#include "gi/radiosity/display/display.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"
 #include "gi/twopass/picture_mask.hpp"

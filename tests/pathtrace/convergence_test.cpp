@@ -11,8 +11,8 @@
 
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/picture_error.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 namespace {
 

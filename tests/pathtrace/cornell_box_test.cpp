@@ -6,13 +6,13 @@
 #include <gtest/gtest.h>
 
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 using gi::vec3;
 
 namespace {
 
-// The published geometry as radiosity had it before the move (lib/gi/radiosity/cornell_box.cpp
+// The published geometry as radiosity had it before the move (lib/gi/radiosity/mesh/cornell_box.cpp
 // at c8cac31), typed out again: corners of each surface. The colours are the palette's
 // (tests/scene/cornell_palette_test.cpp checks them against the published spectra).
 struct Published {

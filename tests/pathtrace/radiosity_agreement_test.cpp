@@ -11,9 +11,9 @@
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/direct_display.hpp"
-#include "gi/radiosity/picture_error.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/display/direct_display.hpp"
+#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/recipe_picture.hpp"
 

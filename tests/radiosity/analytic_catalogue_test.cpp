@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "gi/radiosity/configuration_factors.hpp"
-#include "gi/radiosity/form_factor_adaptive.hpp"
-#include "gi/radiosity/form_factor_formulas.hpp"
-#include "gi/radiosity/form_factors.hpp"
-#include "gi/radiosity/quadrature.hpp"
+#include "gi/radiosity/form_factors/configuration_factors.hpp"
+#include "gi/radiosity/form_factors/form_factor_adaptive.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
+#include "gi/radiosity/form_factors/quadrature.hpp"
 
 using gi::vec3;
 

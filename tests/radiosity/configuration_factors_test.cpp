@@ -1,4 +1,4 @@
-#include "gi/radiosity/configuration_factors.hpp"
+#include "gi/radiosity/form_factors/configuration_factors.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,9 +9,9 @@
 #include <stdexcept>
 
 #include "gi/core/math.hpp"
-#include "gi/radiosity/form_factor_adaptive.hpp"
-#include "gi/radiosity/form_factor_formulas.hpp"
-#include "gi/radiosity/quadrature.hpp"
+#include "gi/radiosity/form_factors/form_factor_adaptive.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
+#include "gi/radiosity/form_factors/quadrature.hpp"
 
 using gi::vec3;
 using ld = long double;

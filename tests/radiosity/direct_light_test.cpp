@@ -7,12 +7,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "gi/radiosity/configuration_factors.hpp"
-#include "gi/radiosity/direct_display.hpp"
-#include "gi/radiosity/direct_light.hpp"
-#include "gi/radiosity/form_factor_formulas.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
-#include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/form_factors/configuration_factors.hpp"
+#include "gi/radiosity/display/direct_display.hpp"
+#include "gi/radiosity/form_factors/direct_light.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
+#include "gi/radiosity/system/solvers.hpp"
 
 using gi::Color;
 

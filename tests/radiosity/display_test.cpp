@@ -1,4 +1,4 @@
-#include "gi/radiosity/display.hpp"
+#include "gi/radiosity/display/display.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "gi/radiosity/radiosity_scenes.hpp"
-#include "gi/radiosity/vertex_colours.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
+#include "gi/radiosity/display/vertex_colours.hpp"
 
 TEST(Display, AUniformRoomShowsItsRadianceEverywhere) {
   // Inside a closed box whose every element has B = 2: every pixel is L = 2 / pi, flat

@@ -11,13 +11,13 @@
 #include <cmath>
 #include <vector>
 
-#include "gi/radiosity/configuration_factors.hpp"
-#include "gi/radiosity/form_factors.hpp"
-#include "gi/radiosity/mesh.hpp"
-#include "gi/radiosity/progressive.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
-#include "gi/radiosity/radiosity_system.hpp"
-#include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/form_factors/configuration_factors.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
+#include "gi/radiosity/mesh/mesh.hpp"
+#include "gi/radiosity/system/progressive.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
+#include "gi/radiosity/system/radiosity_system.hpp"
+#include "gi/radiosity/system/solvers.hpp"
 
 using gi::Color;
 

@@ -1,9 +1,9 @@
-#include "gi/radiosity/float_sweep.hpp"
+#include "gi/radiosity/system/float_sweep.hpp"
 
 #include <gtest/gtest.h>
 
 #include "gi/core/rng.hpp"
-#include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/system/solvers.hpp"
 
 TEST(FloatSweep, BlockedSweepIsGaussSeidel) {
   // 11 elements (two blocks of four and a tail of three): every sweep must equal the

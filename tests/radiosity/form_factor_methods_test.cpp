@@ -1,14 +1,14 @@
-#include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numeric>
 
-#include "gi/radiosity/configuration_factors.hpp"
-#include "gi/radiosity/form_factor_formulas.hpp"
-#include "gi/radiosity/mesh.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/form_factors/configuration_factors.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
+#include "gi/radiosity/mesh/mesh.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 namespace {
 

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "gi/radiosity/configuration_factors.hpp"
-#include "gi/radiosity/form_factor_formulas.hpp"
-#include "gi/radiosity/form_factor_hemicube.hpp"
-#include "gi/radiosity/mesh.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/form_factors/configuration_factors.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
+#include "gi/radiosity/form_factors/form_factor_hemicube.hpp"
+#include "gi/radiosity/mesh/mesh.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 using gi::vec3;
 

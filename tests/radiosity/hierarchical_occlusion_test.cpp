@@ -11,7 +11,7 @@
 #include "gi/radiosity/hierarchical/exposure.hpp"
 #include "gi/radiosity/hierarchical/hierarchical_solver.hpp"
 #include "gi/radiosity/hierarchical/link_estimate.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 using gi::Color;
 using gi::vec3;

@@ -6,15 +6,15 @@
 #include <filesystem>
 #include <fstream>
 
-#include "gi/radiosity/form_factor_formulas.hpp"
-#include "gi/radiosity/form_factor_hemicube.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
+#include "gi/radiosity/form_factors/form_factor_hemicube.hpp"
 #include "gi/radiosity/hierarchical/hierarchical_run.hpp"
 #include "gi/radiosity/hierarchical/leaf_mesh.hpp"
 #include "gi/radiosity/hierarchical/push_pull.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
-#include "gi/radiosity/solvers.hpp"
-#include "gi/radiosity/vertex_colours.hpp"
+#include "gi/radiosity/system/solvers.hpp"
+#include "gi/radiosity/display/vertex_colours.hpp"
 
 using gi::Color;
 

@@ -5,11 +5,11 @@
 // tests/pathtrace/radiosity_agreement_test.cpp.)
 #include <gtest/gtest.h>
 
-#include "gi/radiosity/configuration_factors.hpp"
+#include "gi/radiosity/form_factors/configuration_factors.hpp"
 #include "gi/radiosity/hierarchical/hierarchical_run.hpp"
 #include "gi/radiosity/hierarchical/link_gather.hpp"
-#include "gi/radiosity/quadrature.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/form_factors/quadrature.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 namespace {
 

@@ -1,10 +1,10 @@
-#include "gi/radiosity/mesh.hpp"
+#include "gi/radiosity/mesh/mesh.hpp"
 
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 using gi::vec3;
 

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "gi/core/onb.hpp"
-#include "gi/radiosity/configuration_factors.hpp"
-#include "gi/radiosity/form_factor_adaptive.hpp"
-#include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/form_factors/configuration_factors.hpp"
+#include "gi/radiosity/form_factors/form_factor_adaptive.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
 
 using gi::vec3;
 

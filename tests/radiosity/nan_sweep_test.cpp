@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
 
 using gi::vec3;
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "gi/radiosity/form_factors.hpp"
-#include "gi/radiosity/picture_error.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
+#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 namespace {
 

@@ -9,11 +9,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "gi/radiosity/form_factor_adaptive.hpp"
-#include "gi/radiosity/form_factor_formulas.hpp"
-#include "gi/radiosity/form_factor_hemicube.hpp"
-#include "gi/radiosity/form_factors.hpp"
-#include "gi/radiosity/mesh.hpp"
+#include "gi/radiosity/form_factors/form_factor_adaptive.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
+#include "gi/radiosity/form_factors/form_factor_hemicube.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
+#include "gi/radiosity/mesh/mesh.hpp"
 
 using gi::vec3;
 

@@ -1,7 +1,7 @@
 // Radiosity's view of scene files: the polygon check it shares with make_polygon,
 // triangles cut into three quadrilaterals, emission from radiance, refusals, and the
 // command line's changes (a new light keeps the form factors).
-#include "gi/radiosity/radiosity_scene_file.hpp"
+#include "gi/radiosity/mesh/radiosity_scene_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 
 #include "../scene/scene_file_support.hpp"
 #include "gi/core/rng.hpp"
-#include "gi/radiosity/form_factors.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
-#include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
+#include "gi/radiosity/system/solvers.hpp"
 #include "gi/scene/cornell_box.hpp"
 
 namespace {

@@ -3,7 +3,7 @@
 // too coarse for its mesh is named in one warning line.
 #include <gtest/gtest.h>
 
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
 
 namespace {

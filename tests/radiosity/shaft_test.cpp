@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "gi/core/rng.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
-#include "gi/radiosity/shaft.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
+#include "gi/radiosity/form_factors/shaft.hpp"
 
 using gi::vec3;
 

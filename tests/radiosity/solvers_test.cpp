@@ -1,12 +1,12 @@
-#include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/system/solvers.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "gi/radiosity/form_factor_hemicube.hpp"
-#include "gi/radiosity/progressive.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/form_factors/form_factor_hemicube.hpp"
+#include "gi/radiosity/system/progressive.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 using gi::Color;
 

@@ -9,12 +9,12 @@
 #include <numbers>
 #include <numeric>
 
-#include "gi/radiosity/form_factor_formulas.hpp"
-#include "gi/radiosity/form_factor_hemicube.hpp"
-#include "gi/radiosity/form_factors.hpp"
-#include "gi/radiosity/mesh.hpp"
-#include "gi/radiosity/radiosity_system.hpp"
-#include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
+#include "gi/radiosity/form_factors/form_factor_hemicube.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
+#include "gi/radiosity/mesh/mesh.hpp"
+#include "gi/radiosity/system/radiosity_system.hpp"
+#include "gi/radiosity/system/solvers.hpp"
 
 using gi::vec3;
 

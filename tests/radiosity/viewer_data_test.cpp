@@ -2,7 +2,7 @@
 // (as float32); the lessons' files stay within their stated size; bad data is
 // refused before a byte is written; relighting is linear in E; a hierarchical run's
 // links, summed over a leaf and its ancestors, give what the solver gathers for it.
-#include "gi/radiosity/viewer_data.hpp"
+#include "gi/viewer/data.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,11 +13,11 @@
 
 #include "../support/files.hpp"
 #include "gi/core/atomic_file.hpp"
-#include "gi/radiosity/form_factor_hemicube.hpp"
-#include "gi/radiosity/progressive.hpp"
-#include "gi/radiosity/solvers.hpp"
-#include "gi/radiosity/viewer_demos.hpp"
-#include "gi/radiosity/viewer_hierarchy.hpp"
+#include "gi/radiosity/form_factors/form_factor_hemicube.hpp"
+#include "gi/radiosity/system/progressive.hpp"
+#include "gi/radiosity/system/solvers.hpp"
+#include "gi/viewer/demos.hpp"
+#include "gi/viewer/hierarchical.hpp"
 #include "gi/scene/json.hpp"
 
 using gi::Color;

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "gi/radiosity/display.hpp"
-#include "gi/radiosity/radiosity_scene_file.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
-#include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/display/display.hpp"
+#include "gi/radiosity/mesh/radiosity_scene_file.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
+#include "gi/radiosity/system/solvers.hpp"
 #include "gi/raytrace/render.hpp"
 #include "gi/scene/builtin_scenes.hpp"
 #include "gi/scene/scene_file.hpp"

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "gi/core/rng.hpp"
-#include "gi/radiosity/radiosity_scene_file.hpp"
+#include "gi/radiosity/mesh/radiosity_scene_file.hpp"
 #include "gi/scene/obj_file.hpp"
 #include "gi/scene/scene_file.hpp"
 #include "scene_file_support.hpp"

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/raytrace/optics.hpp"
 #include "gi/twopass/final_gather.hpp"
 #include "gi/twopass/radiosity_pass.hpp"

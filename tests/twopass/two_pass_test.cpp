@@ -7,7 +7,7 @@
 
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/twopass/picture_mask.hpp"
 #include "gi/twopass/radiosity_pass.hpp"
 #include "gi/twopass/two_pass.hpp"

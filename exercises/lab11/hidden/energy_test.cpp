@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "gi/core/rng.hpp"
-#include "gi/radiosity/progressive.hpp"
+#include "gi/radiosity/system/progressive.hpp"
 #include "support/print.hpp"
 
 using gi::Color;

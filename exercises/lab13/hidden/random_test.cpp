@@ -6,7 +6,7 @@
 #include "gi/core/rng.hpp"
 #include "gi/radiosity/hierarchical/oracle.hpp"
 #include "gi/radiosity/hierarchical/push_pull.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "support/print.hpp"
 
 TEST(Ex13_1_RandomLinks, ConstantTransferIsAcceptedAndALooserThresholdNeverRefinesMore) {

@@ -7,8 +7,8 @@
 
 #include "gi/core/timer.hpp"
 #include "gi/radiosity/hierarchical/hierarchical_run.hpp"
-#include "gi/radiosity/progressive.hpp"
-#include "gi/radiosity/solvers.hpp"
+#include "gi/radiosity/system/progressive.hpp"
+#include "gi/radiosity/system/solvers.hpp"
 
 namespace gi {
 

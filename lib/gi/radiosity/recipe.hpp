@@ -3,11 +3,11 @@
 #include <string>
 #include <vector>
 
-#include "gi/radiosity/direct_light.hpp"
-#include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/form_factors/direct_light.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
 #include "gi/radiosity/hierarchical/hierarchical_solver.hpp"
-#include "gi/radiosity/mesh.hpp"
-#include "gi/radiosity/solver.hpp"
+#include "gi/radiosity/mesh/mesh.hpp"
+#include "gi/radiosity/system/solver.hpp"
 
 namespace gi {
 

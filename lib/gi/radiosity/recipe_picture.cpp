@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "gi/radiosity/direct_display.hpp"
+#include "gi/radiosity/display/direct_display.hpp"
 #include "gi/radiosity/hierarchical/link_gather.hpp"
 
 namespace gi {

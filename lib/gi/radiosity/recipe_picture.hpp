@@ -1,6 +1,6 @@
 #pragma once
 #include "gi/image/image.hpp"
-#include "gi/radiosity/display.hpp"
+#include "gi/radiosity/display/display.hpp"
 #include "gi/radiosity/recipe.hpp"
 
 namespace gi {

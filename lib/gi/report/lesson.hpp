@@ -88,7 +88,7 @@ class Lesson {
             const std::function<void(const std::filesystem::path&)>& write);
   // The interactive viewer (docs/viewer/): viewer.html and its scripts are copied
   // in, and `write_data` writes the data it shows to the path it is given
-  // (viewer_data.js; lib/gi/radiosity/viewer_data.hpp). One per lesson.
+  // (viewer_data.js; lib/gi/viewer/data.hpp). One per lesson.
   void viewer(const std::string& caption, const std::function<void(const std::filesystem::path&)>& write_data);
   // A file some library function wrote into out() (a cached reference).
   void record(const std::filesystem::path& file, OutputKind kind, const std::string& caption);

@@ -18,7 +18,7 @@ bool has_area(const vec3& a, const vec3& b, const vec3& c) {
   }
 }
 
-// The checks of make_polygon (radiosity/polygon.cpp), on the same quantities: the
+// The checks of make_polygon (radiosity/mesh/polygon.cpp), on the same quantities: the
 // normal from the diagonals, the size the longer diagonal, the plane through the
 // corners' mean.
 std::string quadrilateral_problem(const std::array<vec3, 4>& c) {

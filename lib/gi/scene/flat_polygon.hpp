@@ -15,7 +15,7 @@ struct FlatPolygon {
 };
 
 // How far a corner may lie off the mean plane, as a fraction of the polygon's size
-// (its longer diagonal): radiosity's planarity_tolerance (radiosity/polygon.hpp), one
+// (its longer diagonal): radiosity's planarity_tolerance (radiosity/mesh/polygon.hpp), one
 // floor up, with which a test keeps it equal.
 inline constexpr double flatness_tolerance = 0.01;
 

@@ -2,7 +2,7 @@
 #include <optional>
 
 #include "gi/accel/world.hpp"
-#include "gi/radiosity/mesh.hpp"
+#include "gi/radiosity/mesh/mesh.hpp"
 #include "gi/twopass/two_pass_scene.hpp"
 
 namespace gi {

@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "gi/core/not_implemented.hpp"
-#include "gi/radiosity/vertex_colours.hpp"
+#include "gi/radiosity/display/vertex_colours.hpp"
 
 namespace gi {
 

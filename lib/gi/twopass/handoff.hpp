@@ -1,7 +1,7 @@
 #pragma once
 #include <vector>
 
-#include "gi/radiosity/mesh.hpp"
+#include "gi/radiosity/mesh/mesh.hpp"
 
 namespace gi {
 

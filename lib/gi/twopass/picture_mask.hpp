@@ -1,5 +1,5 @@
 #pragma once
-#include "gi/radiosity/picture_error.hpp"
+#include "gi/radiosity/display/picture_error.hpp"
 #include "gi/twopass/two_pass_scene.hpp"
 
 namespace gi {

@@ -4,8 +4,8 @@
 
 #include "gi/core/parallel.hpp"
 #include "gi/core/timer.hpp"
-#include "gi/radiosity/direct_light.hpp"
-#include "gi/radiosity/progressive.hpp"
+#include "gi/radiosity/form_factors/direct_light.hpp"
+#include "gi/radiosity/system/progressive.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/twopass/shadow_rays.hpp"
 

@@ -1,8 +1,8 @@
 #pragma once
 #include <cstdint>
 
-#include "gi/radiosity/form_factors.hpp"
-#include "gi/radiosity/solver.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
+#include "gi/radiosity/system/solver.hpp"
 #include "gi/twopass/handoff.hpp"
 #include "gi/twopass/two_pass_scene.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "gi/radiosity/polygon.hpp"
+#include "gi/radiosity/mesh/polygon.hpp"
 
 namespace gi {
 

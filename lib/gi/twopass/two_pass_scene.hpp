@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-#include "gi/radiosity/mesh.hpp"
+#include "gi/radiosity/mesh/mesh.hpp"
 #include "gi/scene/material.hpp"
 #include "gi/geometry/sphere.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 #include <cstdint>
 
-#include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
 #include "gi/radiosity/hierarchical/hierarchy.hpp"
 
 namespace gi {

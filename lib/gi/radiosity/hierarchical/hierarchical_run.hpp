@@ -2,10 +2,10 @@
 #include <cstddef>
 #include <vector>
 
-#include "gi/radiosity/display.hpp"
+#include "gi/radiosity/display/display.hpp"
 #include "gi/radiosity/hierarchical/hierarchical_solver.hpp"
 #include "gi/radiosity/hierarchical/leaf_mesh.hpp"
-#include "gi/radiosity/radiosity_scenes.hpp"
+#include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 namespace gi {
 

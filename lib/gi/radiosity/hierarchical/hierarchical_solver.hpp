@@ -2,9 +2,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "gi/radiosity/direct_light.hpp"
+#include "gi/radiosity/form_factors/direct_light.hpp"
 #include "gi/radiosity/hierarchical/refine.hpp"
-#include "gi/radiosity/solver.hpp"
+#include "gi/radiosity/system/solver.hpp"
 
 namespace gi {
 

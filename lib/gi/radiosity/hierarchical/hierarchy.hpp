@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "gi/radiosity/hierarchical/link.hpp"
-#include "gi/radiosity/mesh.hpp"
+#include "gi/radiosity/mesh/mesh.hpp"
 
 namespace gi {
 

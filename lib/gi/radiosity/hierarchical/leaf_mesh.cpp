@@ -4,7 +4,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "gi/radiosity/vertex_colours.hpp"
+#include "gi/radiosity/display/vertex_colours.hpp"
 
 namespace gi {
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <span>
 
-#include "gi/radiosity/form_factor_formulas.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
 #include "gi/radiosity/hierarchical/exposure.hpp"
 #include "gi/radiosity/hierarchical/visibility.hpp"
 

@@ -6,7 +6,7 @@
 
 #include "gi/core/not_implemented.hpp"
 #include "gi/core/parallel.hpp"
-#include "gi/radiosity/form_factor_formulas.hpp"
+#include "gi/radiosity/form_factors/form_factor_formulas.hpp"
 #include "gi/radiosity/hierarchical/exposure.hpp"
 
 namespace gi {

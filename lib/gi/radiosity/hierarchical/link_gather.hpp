@@ -2,8 +2,8 @@
 #include <optional>
 #include <vector>
 
-#include "gi/radiosity/form_factors.hpp"
-#include "gi/radiosity/shaft.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
+#include "gi/radiosity/form_factors/shaft.hpp"
 #include "gi/radiosity/hierarchical/leaf_mesh.hpp"
 
 namespace gi {

@@ -2,7 +2,7 @@
 #include <vector>
 
 #include "gi/image/image.hpp"
-#include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
 #include "gi/scene/camera.hpp"
 
 namespace gi {

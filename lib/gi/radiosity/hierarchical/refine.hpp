@@ -2,7 +2,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
 #include "gi/radiosity/hierarchical/hierarchy.hpp"
 #include "gi/radiosity/hierarchical/oracle.hpp"
 

@@ -8,7 +8,7 @@
 #include "gi/core/not_implemented.hpp"
 #include "gi/core/rng.hpp"
 #include "gi/radiosity/hierarchical/exposure.hpp"
-#include "gi/radiosity/shaft.hpp"
+#include "gi/radiosity/form_factors/shaft.hpp"
 
 namespace gi {
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "gi/radiosity/form_factors.hpp"
+#include "gi/radiosity/form_factors/form_factors.hpp"
 #include "gi/radiosity/hierarchical/hierarchy.hpp"
 
 namespace gi {
