@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
 #include <vector>
 
 namespace {
@@ -89,8 +91,8 @@ TEST(Options, ARuleBesidesTheRange) {
 
 TEST(Options, BadInputGivesOneClearLine) {
   EXPECT_EQ(error_of({"--width", "-5"}), "--width must be in [1, 8192], got -5");
-  EXPECT_EQ(error_of({"--width", "12abc"}), "--width expects a whole number, got '12abc'");
-  EXPECT_EQ(error_of({"--exposure", "nan"}), "--exposure must be a finite number, got 'nan'");
+  EXPECT_EQ(error_of({"--width", "12abc"}), "--width expects a whole number such as 64 or -3, got '12abc'");
+  EXPECT_EQ(error_of({"--exposure", "nan"}), "--exposure expects a decimal number such as 2, -0.5 or 1e-3, got 'nan'");
   EXPECT_EQ(error_of({"--width"}), "--width needs a value");
   EXPECT_EQ(error_of({"--widht", "3"}), "unknown option '--widht' (did you mean --width?)");
   EXPECT_EQ(error_of({"--scene", "cornell"}), "--scene must be one of: whitted, spheres; got 'cornell'");
@@ -114,4 +116,54 @@ TEST(Options, HelpListsEveryOptionWithDefaultAndRange) {
   EXPECT_NE(help.find("(default 640), range [1, 8192]"), std::string::npos);
   EXPECT_NE(help.find("one of: whitted, spheres"), std::string::npos);
   EXPECT_NE(help.find("--out"), std::string::npos);
+}
+
+// Numbers are decimal ASCII text (number_text.hpp), whatever strtod would also take.
+TEST(Options, NumbersAreDecimalAsciiOnly) {
+  const std::string real = "expects a decimal number such as 2, -0.5 or 1e-3, got '";
+  EXPECT_EQ(error_of({"--exposure", "0x10"}), "--exposure " + real + "0x10'");  // strtod: 16
+  EXPECT_EQ(error_of({"--exposure", "inf"}), "--exposure " + real + "inf'");
+  EXPECT_EQ(error_of({"--exposure", "-inf"}), "--exposure " + real + "-inf'");
+  EXPECT_EQ(error_of({"--exposure", " 5"}), "--exposure " + real + " 5'");  // strtod skips the space
+  EXPECT_EQ(error_of({"--exposure", "+5"}), "--exposure " + real + "+5'");
+  EXPECT_EQ(error_of({"--exposure", "1e"}), "--exposure " + real + "1e'");
+  EXPECT_EQ(error_of({"--exposure", "."}), "--exposure " + real + ".'");
+  EXPECT_EQ(error_of({"--exposure", ""}), "--exposure " + real + "'");
+  EXPECT_EQ(error_of({"--exposure", "1e999"}), "--exposure must be a finite number, got '1e999'");
+  EXPECT_EQ(error_of({"--exposure", "-1e-320"}),
+            "--exposure must be 0 or at least 2.2250738585072014e-308 in size (a smaller double has lost digits), "
+            "got '-1e-320'");
+  EXPECT_EQ(error_of({"--exposure", "1e308"}), "--exposure must be in [0, 100], got 1e308");
+  const std::string whole = "expects a whole number such as 64 or -3, got '";
+  EXPECT_EQ(error_of({"--width", "0x10"}), "--width " + whole + "0x10'");
+  EXPECT_EQ(error_of({"--width", " 5"}), "--width " + whole + " 5'");  // strtoll skips the space
+  EXPECT_EQ(error_of({"--width", "+5"}), "--width " + whole + "+5'");
+  EXPECT_EQ(error_of({"--width", "5.0"}), "--width " + whole + "5.0'");
+  EXPECT_EQ(error_of({"--width", "\xd9\xa3"}), "--width " + whole + "\\xd9\\xa3'");  // ARABIC-INDIC DIGIT THREE
+  EXPECT_EQ(error_of({"--width", "99999999999999999999"}), "--width must be in [1, 8192], got 99999999999999999999");
+  EXPECT_EQ(error_of({"--seed", "\xd9\xa3"}),
+            "--seed expects a whole number from 0 to 18446744073709551615, got '\\xd9\\xa3'");
+  Lesson l;
+  ASSERT_TRUE(l.parse({"--exposure", "-0"}));
+  EXPECT_FALSE(std::signbit(l.exposure)) << "-0 is kept as 0";
+  ASSERT_TRUE(l.parse({"--exposure", ".5"}));
+  EXPECT_EQ(l.exposure, 0.5);
+  ASSERT_TRUE(l.parse({"--exposure", "5."}));
+  EXPECT_EQ(l.exposure, 5);
+  ASSERT_TRUE(l.parse({"--exposure", "2.5E+1"}));
+  EXPECT_EQ(l.exposure, 25);
+  EXPECT_EQ(error_of({"--width", "-0"}), "--width must be in [1, 8192], got -0");
+}
+
+TEST(Options, EachOptionOnce) {
+  EXPECT_EQ(error_of({"--width", "64", "--width=4096"}), "--width is given twice; give each option once");
+  EXPECT_EQ(error_of({"--fast", "--fast"}), "--fast is given twice; give each option once");
+}
+
+// A value is quoted with its control characters and bytes past ASCII spelt out:
+// an escape sequence typed by mistake cannot rewrite the terminal.
+TEST(Options, QuotedValuesCannotRewriteTheTerminal) {
+  EXPECT_EQ(error_of({"--scene", "\x1b[2J"}), "--scene must be one of: whitted, spheres; got '\\x1b[2J'");
+  EXPECT_EQ(error_of({"--width", std::string(100, '7').c_str()}),
+            "--width must be in [1, 8192], got " + std::string(40, '7') + "...");
 }

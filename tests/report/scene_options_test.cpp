@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -68,8 +69,19 @@ TEST(SceneOptions, ACameraIsEyeLookAtAndAFieldOfView) {
   EXPECT_FALSE(gi::parse_camera_change("0,0,1:0,0,0").fov.has_value());
   EXPECT_EQ(camera_error("1,2"), "--camera expects EYE:LOOK_AT[:FOV] such as 278,273,-800:278,273,0:40, got '1,2'");
   EXPECT_EQ(camera_error("1,2:3,4,5"), "--camera eye: expected three numbers x,y,z, got '1,2'");
-  EXPECT_EQ(camera_error("1,2,3:3,x,5"), "--camera look-at: expected a number, got 'x'");
-  EXPECT_EQ(camera_error("1,2,3:3,nan,5"), "--camera look-at: expected a number, got 'nan'");
+  const std::string decimal = "expected a decimal number such as 2, -0.5 or 1e-3, got '";
+  EXPECT_EQ(camera_error("1,2,3:3,x,5"), "--camera look-at: " + decimal + "x'");
+  EXPECT_EQ(camera_error("1,2,3:3,nan,5"), "--camera look-at: " + decimal + "nan'");
+  // The grammar of number_text.hpp, not the converter's: no hex, sign '+', spaces or inf.
+  EXPECT_EQ(camera_error("0x10,0,0:0,0,0"), "--camera eye: " + decimal + "0x10'");
+  EXPECT_EQ(camera_error("+1,0,0:0,0,0"), "--camera eye: " + decimal + "+1'");
+  EXPECT_EQ(camera_error(" 1,0,0:0,0,0"), "--camera eye: " + decimal + " 1'");
+  EXPECT_EQ(camera_error("inf,0,0:0,0,0"), "--camera eye: " + decimal + "inf'");
+  EXPECT_EQ(camera_error("1,0,0:0,0,0:1e"), "--camera field of view: " + decimal + "1e'");
+  EXPECT_EQ(camera_error("1e-320,0,0:0,0,0"),
+            "--camera eye: the number must be 0 or at least 2.2250738585072014e-308 in size (a smaller double has "
+            "lost digits), got '1e-320'");
+  EXPECT_FALSE(std::signbit(gi::parse_camera_change("-0,1,2:0,0,0").eye.x)) << "-0 is kept as 0";
   EXPECT_EQ(camera_error("1,2,3:1,2,3"), "--camera: the eye and the point looked at must differ");
   EXPECT_EQ(camera_error("1,2,3:0,0,0:180"), "--camera: the field of view must lie in (0, 180) degrees, got 180");
   EXPECT_EQ(camera_error("1e7,0,0:0,0,0"), "--camera eye: each coordinate must lie in [-1e6, 1e6], got '1e7,0,0'");
@@ -85,7 +97,13 @@ TEST(SceneOptions, LightScalesAreNamesWithFactors) {
   EXPECT_EQ(scales_error("light"), "--light-scale expects NAME=FACTOR[,NAME=FACTOR ...] such as light=2, got 'light'");
   EXPECT_EQ(scales_error("=2"), "--light-scale expects NAME=FACTOR[,NAME=FACTOR ...] such as light=2, got '=2'");
   EXPECT_EQ(scales_error("light=-1"), "--light-scale light: the factor must lie in [0, 1e6], got -1");
-  EXPECT_EQ(scales_error("light=two"), "--light-scale light: expected a number, got 'two'");
+  EXPECT_EQ(scales_error("light=two"),
+            "--light-scale light: expected a decimal number such as 2, -0.5 or 1e-3, got 'two'");
+  EXPECT_EQ(scales_error("light=0x10"),
+            "--light-scale light: expected a decimal number such as 2, -0.5 or 1e-3, got '0x10'");
+  EXPECT_EQ(scales_error("light=1e-320"),
+            "--light-scale light: the number must be 0 or at least 2.2250738585072014e-308 in size (a smaller "
+            "double has lost digits), got '1e-320'");
   EXPECT_EQ(scales_error("light=1,light=2"), "--light-scale names 'light' twice");
 }
 

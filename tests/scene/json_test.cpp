@@ -77,6 +77,10 @@ TEST(Json, SyntaxErrorsNameTheirPosition) {
       {"[-Infinity]", "f.json:1:3: Infinity is not a number JSON allows; write a finite number"},
       {"[1e400]", "f.json:1:2: the number 1e400 is out of the range of a double"},
       {"[-1e999]", "f.json:1:2: the number -1e999 is out of the range of a double"},
+      {"[1e-320]", "f.json:1:2: the number 1e-320 must be 0 or at least 2.2250738585072014e-308 in size (a smaller "
+                   "double has lost digits)"},
+      {"[0x10]", "f.json:1:3: expected ']' or ',' after an item of the array, got 'x'"},
+      {"[+1]", "f.json:1:2: expected a value, got '+'"},
       {"[07]", "f.json:1:3: a number may not start with 0 (write 7, not 07)"},
       {"[1.]", "f.json:1:4: expected a digit after the decimal point, got ']'"},
       {"[1e]", "f.json:1:4: expected a digit in the exponent, got ']'"},

@@ -55,6 +55,13 @@ TEST(ObjFile, EveryErrorNamesLineAndColumn) {
       {"v 0 x 0\n", "m.obj:1:5: v: expected a number, got 'x'"},
       {"v 0 nan 0\n", "m.obj:1:5: v: expected a number, got 'nan'"},
       {"v 0 1e400 0\n", "m.obj:1:5: v: expected a number, got '1e400'"},
+      // Decimal text only (number_text.hpp), whatever the converter would take.
+      {"v 0 0x10 0\n", "m.obj:1:5: v: expected a number, got '0x10'"},
+      {"v 0 +1 0\n", "m.obj:1:5: v: expected a number, got '+1'"},
+      {"v 0 inf 0\n", "m.obj:1:5: v: expected a number, got 'inf'"},
+      {"v 0 1e 0\n", "m.obj:1:5: v: expected a number, got '1e'"},
+      {"v 0 1e-320 0\n", "m.obj:1:5: v: a coordinate must be 0 or at least 2.2250738585072014e-308 in size (a "
+                          "smaller double has lost digits), got 1e-320"},
       {"v 0 2e6 0\n", "m.obj:1:5: v: a coordinate must lie in [-1e6, 1e6], got 2e6"},
       {square + "f 1 2\n", "m.obj:5:1: f: a face of 2 corners; only triangles and quadrilaterals (triangulate the "
                            "mesh when you export it)"},
@@ -68,6 +75,7 @@ TEST(ObjFile, EveryErrorNamesLineAndColumn) {
                               "back from -1)"},
       {square + "f 1 2 a\n", "m.obj:5:7: f: expected a vertex index such as 7, 7/2 or 7//3, got 'a'"},
       {square + "f 1 2 3/x\n", "m.obj:5:7: f: expected a vertex index such as 7, 7/2 or 7//3, got '3/x'"},
+      {square + "f 1 2 +3\n", "m.obj:5:7: f: expected a vertex index such as 7, 7/2 or 7//3, got '+3'"},
       {square + "f 1 2 2\n", "m.obj:5:1: f: the corners are on one line, so it has no area"},
       {square + "v 1 1 1\nf 1 2 5 4\n", "m.obj:6:1: f: the corners are not in one plane (a corner is 12% of its "
                                         "size off it; at most 1%)"},

@@ -1,44 +1,49 @@
 #include "gi/report/options.hpp"
 
+#include <algorithm>
 #include <cerrno>
-#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
 
 #include "gi/core/did_you_mean.hpp"
+#include "gi/core/number_text.hpp"
 #include "gi/report/table.hpp"
 
 namespace gi {
 
 namespace {
 
-long long parse_integer(const std::string& name, const std::string& text) {
+// The text is checked against the grammar of number_text.hpp before it is converted.
+long long parse_integer(const std::string& name, const std::string& text, long long min, long long max) {
+  if (!is_whole_number_text(text))
+    throw OptionError(name + " expects a whole number such as 64 or -3, got '" + quoted_text(text) + "'");
   errno = 0;
-  char* end = nullptr;
-  const long long v = std::strtoll(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno == ERANGE)
-    throw OptionError(name + " expects a whole number, got '" + text + "'");
+  const long long v = std::strtoll(text.c_str(), nullptr, 10);
+  if (errno == ERANGE)  // past +-9.2e18: out of any option's range, which names the range
+    throw OptionError(name + " must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
+                      quoted_text(text));
   return v;
 }
 
 // All of 0 .. 2^64 - 1: strtoull alone would take "-1" as 2^64 - 1.
 std::uint64_t parse_unsigned(const std::string& name, const std::string& text) {
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+    throw OptionError(name + " expects a whole number from 0 to 18446744073709551615, got '" + quoted_text(text) +
+                      "'");
   errno = 0;
-  char* end = nullptr;
-  const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
-  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || *end != '\0')
-    throw OptionError(name + " expects a whole number from 0 to 18446744073709551615, got '" + text + "'");
-  if (errno == ERANGE) throw OptionError(name + " must be at most 18446744073709551615, got " + text);
+  const unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
+  if (errno == ERANGE) throw OptionError(name + " must be at most 18446744073709551615, got " + quoted_text(text));
   return v;
 }
 
 double parse_real(const std::string& name, const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0') throw OptionError(name + " expects a number, got '" + text + "'");
-  if (!std::isfinite(v)) throw OptionError(name + " must be a finite number, got '" + text + "'");
-  return v;
+  if (!is_real_number_text(text))
+    throw OptionError(name + " expects a decimal number such as 2, -0.5 or 1e-3, got '" + quoted_text(text) + "'");
+  const double v = std::strtod(text.c_str(), nullptr);
+  if (const RealProblem problem = real_problem(v); problem != RealProblem::None)
+    throw OptionError(name + " " + real_problem_text(problem) + ", got '" + quoted_text(text) + "'");
+  return v == 0 ? 0.0 : v;  // -0 is 0: nothing downstream prints "-0"
 }
 
 template <class T>
@@ -50,7 +55,7 @@ std::string range_text(T min, T max) {
 
 template <class T>
 void check_range(const std::string& name, T v, T min, T max, const std::string& text) {
-  if (v < min || v > max) throw OptionError(name + " must be in " + range_text(min, max) + ", got " + text);
+  if (v < min || v > max) throw OptionError(name + " must be in " + range_text(min, max) + ", got " + quoted_text(text));
 }
 
 }  // namespace
@@ -64,7 +69,7 @@ Options& Options::add_option(Option option) {
 
 Options& Options::add(const std::string& name, int& value, const std::string& help, int min, int max) {
   return add_option({name, help, std::to_string(value), range_text(min, max), true, [&value, name, min, max](const std::string& t) {
-                       const long long v = parse_integer(name, t);
+                       const long long v = parse_integer(name, t, min, max);
                        check_range<long long>(name, v, min, max, t);
                        value = static_cast<int>(v);
                      }});
@@ -74,7 +79,7 @@ Options& Options::add(const std::string& name, int& value, const std::string& he
                       const Rule& rule) {
   return add_option({name, help, std::to_string(value), range_text(min, max) + ", " + rule.name, true,
                      [&value, name, min, max, rule](const std::string& t) {
-                       const long long v = parse_integer(name, t);
+                       const long long v = parse_integer(name, t, min, max);
                        check_range<long long>(name, v, min, max, t);
                        if (!rule.holds(v)) throw OptionError(name + " must be " + rule.name + ", got " + t);
                        value = static_cast<int>(v);
@@ -104,7 +109,7 @@ Options& Options::add(const std::string& name, std::string& value, const std::st
                      [&value, name, choices, listed](const std::string& t) {
                        if (t.empty()) throw OptionError(name + " needs a value, got an empty one");
                        if (!choices.empty() && std::find(choices.begin(), choices.end(), t) == choices.end())
-                         throw OptionError(name + " must be one of: " + listed + "; got '" + t + "'");
+                         throw OptionError(name + " must be one of: " + listed + "; got '" + quoted_text(t) + "'");
                        value = t;
                      }});
 }
@@ -116,7 +121,7 @@ Options& Options::add_flag(const std::string& name, bool& value, const std::stri
 Options& Options::add_optional(const std::string& name, std::optional<int>& value, const std::string& help, int min,
                                int max) {
   return add_option({name, help, "unset", range_text(min, max), true, [&value, name, min, max](const std::string& t) {
-                       const long long v = parse_integer(name, t);
+                       const long long v = parse_integer(name, t, min, max);
                        check_range<long long>(name, v, min, max, t);
                        value = static_cast<int>(v);
                      }});
@@ -137,6 +142,8 @@ const Options::Option* Options::find(const std::string& name) const {
 }
 
 bool Options::parse(int argc, const char* const* argv) {
+  // Each option once: "--width 64 --width 4096" would leave a reader guessing which holds.
+  std::vector<const Option*> given;
   for (int i = 1; i < argc; ++i) {
     std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
@@ -154,8 +161,11 @@ bool Options::parse(int argc, const char* const* argv) {
     if (!option) {
       std::vector<std::string> names;
       for (const Option& o : options_) names.push_back(o.name);
-      throw OptionError("unknown option '" + arg + "'" + did_you_mean(arg, names, ""));
+      throw OptionError("unknown option '" + quoted_text(arg) + "'" + did_you_mean(arg, names, ""));
     }
+    if (std::find(given.begin(), given.end(), option) != given.end())
+      throw OptionError(arg + " is given twice; give each option once");
+    given.push_back(option);
     if (!option->takes_value) {
       if (has_value) throw OptionError(arg + " takes no value");
       option->set("");
@@ -165,7 +175,7 @@ bool Options::parse(int argc, const char* const* argv) {
       if (i + 1 >= argc) throw OptionError(arg + " needs a value");
       value = argv[++i];
       // "--out --threads": the value was forgotten. Negative numbers ("-3") pass.
-      if (value.rfind("--", 0) == 0) throw OptionError(arg + " needs a value, got the option '" + value + "'");
+      if (value.rfind("--", 0) == 0) throw OptionError(arg + " needs a value, got the option '" + quoted_text(value) + "'");
     }
     option->set(value);
   }
@@ -186,6 +196,8 @@ std::string Options::help() const {
     os << '\n';
   }
   os << "  --help" << std::string(width - 4, ' ') << "print this help and exit\n";
+  os << "\nNumbers are decimal, in the digits 0-9: 64, -3, 0.5, .5, 1e-3 (no '+', no hex such as 0x10, no spaces,\n"
+        "no inf or nan; a real number is 0 or at least 2.2250738585072014e-308 in size). Each option once.\n";
   return os.str();
 }
 

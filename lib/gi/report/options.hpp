@@ -22,7 +22,9 @@ struct Rule {
 inline const Rule even{"even", [](long long v) { return v % 2 == 0; }};
 
 // A lesson's command-line options: each is bound to a variable that holds its default.
-// Accepts "--name value" and "--name=value"; checks ranges, rules and choices. A value
+// Accepts "--name value" and "--name=value", each option once; checks ranges, rules and
+// choices. Numbers are spelled as number_text.hpp says (decimal ASCII digits: no "0x10",
+// "+5", " 5", "inf" or "nan"), a real one neither infinite nor subnormal. A value
 // taken from the next argument may not look like an option ("--out --threads" is a
 // missing value, not a folder named --threads), and text may not be empty.
 class Options {

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "gi/core/number_text.hpp"
 #include "gi/scene/utf8.hpp"
 
 namespace gi {
@@ -231,7 +232,10 @@ class Parser {
       throw SceneError({file_, line_, column_ - static_cast<int>(token.size()), ""},
                        "the number " + std::string(token.substr(0, 40)) + " is out of the range of a double");
     if (error != std::errc() || end != token.data() + token.size()) fail("cannot read the number");
-    return v;
+    if (real_problem(v) == RealProblem::Subnormal)
+      throw SceneError({file_, line_, column_ - static_cast<int>(token.size()), ""},
+                       "the number " + std::string(token.substr(0, 40)) + " " + real_problem_text(real_problem(v)));
+    return v == 0 ? 0.0 : v;  // -0 is 0
   }
 
   void literal(JsonValue& v) {

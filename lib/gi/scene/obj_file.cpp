@@ -8,6 +8,7 @@
 #include <fstream>
 #include <unordered_map>
 
+#include "gi/core/number_text.hpp"
 #include "gi/scene/json.hpp"
 #include "gi/scene/utf8.hpp"
 
@@ -88,11 +89,15 @@ class ObjReader {
     throw SceneError({name_, line_, column, path}, message);
   }
 
+  // Decimal text first (number_text.hpp): the grammar, not the converter, says what is a number.
   double number(const Word& w) const {
     double v = 0;
     const auto [end, error] = std::from_chars(w.text.data(), w.text.data() + w.text.size(), v);
-    if (error != std::errc() || end != w.text.data() + w.text.size() || !std::isfinite(v))
+    if (!is_real_number_text(w.text) || error != std::errc() || end != w.text.data() + w.text.size() ||
+        !std::isfinite(v))
       fail(w.column, "v", "expected a number, got '" + std::string(w.text.substr(0, 40)) + "'");
+    if (const RealProblem problem = real_problem(v); problem != RealProblem::None)
+      fail(w.column, "v", "a coordinate " + real_problem_text(problem) + ", got " + std::string(w.text));
     if (std::abs(v) > 1e6) fail(w.column, "v", "a coordinate must lie in [-1e6, 1e6], got " + std::string(w.text));
     return v;
   }
@@ -113,7 +118,7 @@ class ObjReader {
     const auto [end, error] = std::from_chars(first.data(), first.data() + first.size(), index);
     const bool rest_ok = std::all_of(w.text.begin() + static_cast<std::ptrdiff_t>(first.size()), w.text.end(),
                                      [](char c) { return c == '/' || c == '-' || (c >= '0' && c <= '9'); });
-    if (error != std::errc() || end != first.data() + first.size() || !rest_ok || first.empty())
+    if (!is_whole_number_text(first) || error != std::errc() || end != first.data() + first.size() || !rest_ok)
       fail(w.column, "f",
            "expected a vertex index such as 7, 7/2 or 7//3, got '" + std::string(w.text.substr(0, 40)) + "'");
     const auto n = static_cast<long long>(vertices_.size());
