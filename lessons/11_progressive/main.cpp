@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "gi/core/norms.hpp"
 #include "gi/core/timer.hpp"
 #include "gi/image/diff.hpp"
 #include "gi/radiosity/display/display.hpp"
@@ -26,13 +27,16 @@ namespace {
 
 // RMS difference to the reference over the elements that do not emit, relative to
 // their RMS: the light's own elements, right from the start and 10x brighter than
-// anything else, would otherwise hide the error everywhere else.
+// anything else, would otherwise hide the error everywhere else. Both are scaled by
+// the reference's largest value first (core/norms.hpp): under a light of 1e-300 the
+// squares would be 0.
 double error(const std::vector<gi::Color>& B, const std::vector<gi::Color>& reference,
              const std::vector<gi::Color>& emission) {
+  const double s = gi::power_of_two_scale(gi::largest_channel(reference));
   double d2 = 0, b2 = 0;
   for (std::size_t i = 0; i < B.size(); ++i)
     if (gi::max_component(emission[i]) == 0)
-      d2 += gi::length_squared(B[i] - reference[i]), b2 += gi::length_squared(reference[i]);
+      d2 += gi::length_squared(s * (B[i] - reference[i])), b2 += gi::length_squared(s * reference[i]);
   return std::sqrt(d2 / b2);
 }
 

@@ -103,3 +103,37 @@ TEST(Mesh, ElementCountTargetAndBadSettings) {
   for (const std::string& name : gi::radiosity_scene_names())
     EXPECT_EQ(gi::make_radiosity_scene(name).name, name);
 }
+
+// element_count is make_mesh's own arithmetic: the count a lesson checks before any
+// work is the count it gets.
+TEST(Mesh, ElementCountPredictsTheMesh) {
+  const gi::RadiosityScene scene = gi::cornell_box();
+  for (const int elements : {20, 400, 1000, 5000})
+    for (const int m : {1, 3}) {
+      const gi::MeshSettings settings{gi::patch_size_for(scene.surfaces, elements, m), m};
+      EXPECT_EQ(gi::element_count(scene.surfaces, settings), double(gi::make_mesh(scene.surfaces, settings).elements.size()))
+          << elements << " elements, " << m << " a side";
+    }
+}
+
+// "About n elements" rounds every surface's patches up: 20 707 for the Cornell box at
+// 20 000, past the stored matrix's limit. patch_size_at_most reaches a limit and never
+// passes it, from both ends of the lessons' ranges, and leaves every mesh that was
+// already within it as it was (the lessons' pictures keep their bytes).
+TEST(Mesh, AMeshReachesItsLimitAndNeverPassesIt) {
+  const gi::RadiosityScene scene = gi::cornell_box();
+  const int most = 20000;
+  EXPECT_GT(gi::element_count(scene.surfaces, {gi::patch_size_for(scene.surfaces, most, 1), 1}), most);
+  for (int elements = 20; elements <= most; elements += elements < 19000 ? 997 : 37) {
+    const double about = gi::patch_size_for(scene.surfaces, elements, 1);
+    const double size = gi::patch_size_at_most(scene.surfaces, elements, 1, most);
+    const double n = gi::element_count(scene.surfaces, {size, 1});
+    EXPECT_LE(n, most) << elements;
+    if (gi::element_count(scene.surfaces, {about, 1}) <= most) EXPECT_EQ(size, about) << elements;
+    else EXPECT_GT(n, 0.97 * most) << elements << ": the finest mesh within the limit";
+  }
+  EXPECT_EQ(gi::make_mesh(scene.surfaces, {gi::patch_size_at_most(scene.surfaces, most, 1, most), 1}).elements.size(),
+            gi::element_count(scene.surfaces, {gi::patch_size_at_most(scene.surfaces, most, 1, most), 1}));
+  EXPECT_THROW((void)gi::patch_size_at_most(scene.surfaces, 100, 4, 100), std::invalid_argument)
+      << "fewer than one patch of 4 x 4 elements per surface";
+}

@@ -71,3 +71,16 @@ TEST(RecipeHemicube, OtherMethodsHaveNoCellsToAlias) {
 }
 
 }  // namespace
+
+// Past the stored matrix's limit a matrix solver is refused before any work (the
+// mesh of up to the limit is capped at it: mesh_test.cpp).
+TEST(Recipe, AMatrixSolverPastItsLimitIsRefusedAtOnce) {
+  gi::Recipe recipe;
+  recipe.elements = gi::max_matrix_elements + 1;
+  try {
+    (void)gi::solve_recipe(gi::cornell_box().surfaces, recipe);
+    FAIL() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "solve_recipe: 20001 elements is too many for a stored matrix (at most 20000)");
+  }
+}

@@ -60,6 +60,33 @@ TEST(Solvers, FurnaceHasTheClosedFormAnswer) {
   }
 }
 
+// Residuals and errors are relative, so a light 1e-300 times dimmer (radiosities whose
+// squares are 0 in double) must give the same history, step by step, as a light of 1;
+// and a light 2^-900 times dimmer (a power of two: every number scales exactly) the
+// very same numbers.
+TEST(Solvers, RelativeNumbersDoNotDependOnTheLightsScale) {
+  const gi::RadiositySystem& bright = cornell().system;
+  const gi::SolverResult reference = gi::solve_direct(bright);
+  for (const double k : {1e-300, std::ldexp(1.0, -900), 1e300}) {
+    gi::RadiositySystem dim = bright;
+    for (Color& e : dim.emission) e *= k;
+    std::vector<Color> dim_reference = reference.B;
+    for (Color& b : dim_reference) b *= k;
+    gi::SolverOptions options, dim_options;
+    options.tolerance = dim_options.tolerance = 1e-6;
+    options.reference = &reference.B;
+    dim_options.reference = &dim_reference;
+    const gi::SolverResult a = gi::solve_gauss_seidel(bright, options), b = gi::solve_gauss_seidel(dim, dim_options);
+    EXPECT_EQ(b.status, gi::SolveStatus::Converged) << k;
+    ASSERT_EQ(a.history.size(), b.history.size()) << k;
+    const double tolerance = std::ldexp(1.0, std::ilogb(k)) == k ? 0 : 1e-9;  // a power of two: exact
+    for (std::size_t i = 0; i < a.history.size(); ++i) {
+      EXPECT_NEAR(b.history[i].residual_2, a.history[i].residual_2, tolerance * a.history[i].residual_2) << k;
+      EXPECT_NEAR(b.history[i].error, a.history[i].error, tolerance * a.history[i].error + 1e-15) << k;
+    }
+  }
+}
+
 TEST(Solvers, TwoPatchesSolvedByHand) {
   // B1 = E1 + rho1 F12 B2, B2 = rho2 F21 B1 with E2 = 0.
   gi::RadiositySystem s;

@@ -34,6 +34,20 @@ TEST(Table, WrongCellCountThrows) {
   EXPECT_THROW(table.add_row({1}), std::invalid_argument);
 }
 
+// A NaN in a table is a number gone wrong: the lesson stops rather than print it.
+TEST(Table, ANumberThatIsNotFiniteIsRefused) {
+  gi::Table table("errors", {{"shots"}, {"error"}});
+  try {
+    table.add_row({1, NAN});
+    FAIL() << "a NaN was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "table 'errors', column 'error': the value is not a number (NaN); it cannot be shown");
+  }
+  EXPECT_THROW(table.add_row({2, -INFINITY}), std::runtime_error);
+  table.add_row({3, "-"});  // a value that does not exist
+  EXPECT_EQ(table.rows(), 1u);
+}
+
 TEST(Table, CsvQuotesAndKeepsFullPrecision) {
   gi::Table table("t", {{"label"}, {"value"}});
   table.add_row({"a, \"quoted\" b", 0.1 + 0.2});

@@ -102,7 +102,13 @@ RecipeResult hierarchical_recipe(const std::vector<Surface>& surfaces, const Rec
 RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe) {
   if (recipe.solver == RecipeSolver::Hierarchical) return hierarchical_recipe(surfaces, recipe);
   RecipeResult result;
-  result.mesh = make_mesh(surfaces, {patch_size_for(surfaces, recipe.elements, recipe.elements_per_side),
+  const bool shooting = recipe.solver == RecipeSolver::Progressive;
+  if (!shooting && recipe.elements > max_matrix_elements)
+    throw std::invalid_argument("solve_recipe: " + std::to_string(recipe.elements) + " elements is too many for a " +
+                                "stored matrix (at most " + std::to_string(max_matrix_elements) + ")");
+  // A matrix solver's mesh is about `elements`, but never past the matrix's limit.
+  const int most = shooting ? 1'000'000 : max_matrix_elements;
+  result.mesh = make_mesh(surfaces, {patch_size_at_most(surfaces, recipe.elements, recipe.elements_per_side, most),
                                      recipe.elements_per_side});
   const Mesh& mesh = result.mesh;
   Recipe r = recipe;
@@ -111,10 +117,6 @@ RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& re
   check(r.form_factors);
   if (r.exact_direct) check(r.direct);
   result.form_factors = r.form_factors;
-  const int n = static_cast<int>(mesh.elements.size());
-  const bool shooting = r.solver == RecipeSolver::Progressive;
-  if (!shooting && n > 20000)
-    throw std::invalid_argument("solve_recipe: " + std::to_string(n) + " elements is too many for a stored matrix");
   const FormFactorScene receivers(element_shapes(mesh));
   Timer timer;
   RadiositySystem system = make_system(
@@ -151,7 +153,7 @@ RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& re
   result.status = solution.status;
   result.B = solution.B;
   if (r.exact_direct)
-    for (int i = 0; i < n; ++i) result.B[i] += E[i];  // B = E + B_indirect
+    for (std::size_t i = 0; i < E.size(); ++i) result.B[i] += E[i];  // B = E + B_indirect
   return result;
 }
 

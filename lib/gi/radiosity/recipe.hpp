@@ -56,9 +56,13 @@ struct RecipeResult {
   double seconds() const { return form_factor_seconds + direct_seconds + solve_seconds; }
 };
 
+// The most elements a matrix solver takes: its n x n matrix of doubles is 3.2 GB at 20 000.
+inline constexpr int max_matrix_elements = 20000;
+
 // Throws std::invalid_argument for bad settings (as make_mesh, check(FormFactorSettings)
-// and check(DirectLightSettings) do) and for a matrix solver on more than 20 000
-// elements (its n x n matrix would pass 3 GB).
+// and check(DirectLightSettings) do) and for a matrix solver asked for more than
+// max_matrix_elements; asked for up to that, its mesh has about `elements` but never
+// more than max_matrix_elements (patch_size_at_most), checked before any work.
 RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe);
 
 // A receiver whose image is smaller than one hemicube cell gets a whole cell's dF or

@@ -51,6 +51,13 @@ void Table::add_row(std::vector<Cell> cells) {
   if (cells.size() != columns_.size())
     throw std::invalid_argument("table '" + title_ + "': a row needs " + std::to_string(columns_.size()) +
                                 " cells, got " + std::to_string(cells.size()));
+  // A NaN or an infinity in a table is a number that went wrong, never a result: the
+  // lesson stops (status 1) rather than print it and exit 0. A value that does not
+  // exist is a text cell ("-") with the reason said under the table.
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    if (const auto* d = std::get_if<double>(&cells[c].value); d && !std::isfinite(*d))
+      throw std::runtime_error("table '" + title_ + "', column '" + columns_[c].name + "': the value is " +
+                               (std::isnan(*d) ? "not a number (NaN)" : "infinite") + "; it cannot be shown");
   rows_.push_back(std::move(cells));
 }
 

@@ -41,7 +41,9 @@ struct TableText {
 class Table {
  public:
   Table(std::string title, std::vector<Column> columns);
-  void add_row(std::vector<Cell> cells);  // throws std::invalid_argument on a wrong cell count
+  // Throws std::invalid_argument on a wrong cell count, std::runtime_error on a NaN or an
+  // infinite number (a value that does not exist is a text cell such as "-").
+  void add_row(std::vector<Cell> cells);
   void print(std::ostream& os = std::cout) const;
   std::string to_string() const;
   TableText text() const;

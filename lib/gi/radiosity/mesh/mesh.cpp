@@ -1,5 +1,6 @@
 #include "gi/radiosity/mesh/mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -22,7 +23,16 @@ void check(const Surface& s) {
 }
 
 // How many pieces an edge pair of length up to `length` is cut into.
-int pieces(double length, double patch_size) { return std::max(1, static_cast<int>(std::ceil(length / patch_size - 1e-9))); }
+// Capped past 10^6, which no mesh may pass anyway, so that the cast cannot overflow.
+int pieces(double length, double patch_size) {
+  return static_cast<int>(std::clamp(std::ceil(length / patch_size - 1e-9), 1.0, 1e6 + 1));
+}
+
+// Patches along the two edge pairs of a surface: make_mesh's grid, and element_count's.
+std::array<int, 2> patch_grid(const std::array<vec3, 4>& c, double patch_size) {
+  return {pieces(std::max(length(c[1] - c[0]), length(c[2] - c[3])), patch_size),
+          pieces(std::max(length(c[3] - c[0]), length(c[2] - c[1])), patch_size)};
+}
 
 }  // namespace
 
@@ -31,6 +41,9 @@ Mesh make_mesh(const std::vector<Surface>& surfaces, const MeshSettings& setting
   if (settings.elements_per_side < 1 || settings.elements_per_side > 64)
     throw std::invalid_argument("mesh: elements per patch side must lie in [1, 64]");
   for (const Surface& s : surfaces) check(s);
+  // Counted before anything is made: the same grid as below.
+  if (element_count(surfaces, settings) > 1e6)
+    throw std::invalid_argument("mesh: more than 10^6 elements; use a larger patch size");
   // Surfaces that lie in one plane and overlap: few, so every pair is compared.
   std::vector<Polygon> shapes;
   for (const Surface& s : surfaces) shapes.push_back(make_polygon(s.corners));
@@ -44,10 +57,8 @@ Mesh make_mesh(const std::vector<Surface>& surfaces, const MeshSettings& setting
   const int m = settings.elements_per_side;
   for (int s = 0; s < static_cast<int>(surfaces.size()); ++s) {
     const std::array<vec3, 4>& c = surfaces[s].corners;
-    const int nu = pieces(std::max(length(c[1] - c[0]), length(c[2] - c[3])), settings.patch_size);
-    const int nv = pieces(std::max(length(c[3] - c[0]), length(c[2] - c[1])), settings.patch_size);
-    if (static_cast<double>(nu) * nv * m * m + mesh.elements.size() > 1e6)
-      throw std::invalid_argument("mesh: more than 10^6 elements; use a larger patch size");
+    const auto [nu, nv] = patch_grid(c, settings.patch_size);
+
     // The surface's grid of element corners, shared by neighbouring elements.
     const int first_vertex = static_cast<int>(mesh.vertices.size());
     const int NU = nu * m, NV = nv * m;
@@ -87,6 +98,37 @@ double patch_size_for(const std::vector<Surface>& surfaces, int elements, int el
   for (const Surface& s : surfaces) area += make_polygon(s.corners).area;
   // n elements of side e cover the area: e = sqrt(area / n); a patch is m elements wide.
   return std::sqrt(area / elements) * elements_per_side;
+}
+
+double element_count(const std::vector<Surface>& surfaces, const MeshSettings& settings) {
+  double n = 0;
+  for (const Surface& s : surfaces) {
+    const auto [nu, nv] = patch_grid(s.corners, settings.patch_size);
+    n += double(nu) * nv * settings.elements_per_side * settings.elements_per_side;
+  }
+  return n;
+}
+
+double patch_size_at_most(const std::vector<Surface>& surfaces, int elements, int elements_per_side, int most) {
+  const double about = patch_size_for(surfaces, elements, elements_per_side);
+  if (element_count(surfaces, {about, elements_per_side}) <= most) return about;
+  // Each surface rounds its patches up, so the count can pass `elements`; it falls as the
+  // patch size grows, down to one patch per surface at the longest edge.
+  double longest = 0;
+  for (const Surface& s : surfaces)
+    for (int k = 0; k < 4; ++k) longest = std::max(longest, length(s.corners[(k + 1) % 4] - s.corners[k]));
+  double hi = 2 * longest;
+  if (element_count(surfaces, {hi, elements_per_side}) > most)
+    throw std::invalid_argument("mesh: " + std::to_string(surfaces.size()) + " surfaces of " +
+                                std::to_string(elements_per_side * elements_per_side) +
+                                " elements at least each make more than " + std::to_string(most) + " elements");
+  // Bisection for the smallest size that fits: the finest mesh within the limit.
+  double lo = about;
+  for (int step = 0; step < 100 && hi - lo > 1e-12 * hi; ++step) {
+    const double mid = 0.5 * (lo + hi);
+    (element_count(surfaces, {mid, elements_per_side}) <= most ? hi : lo) = mid;
+  }
+  return hi;
 }
 
 }  // namespace gi

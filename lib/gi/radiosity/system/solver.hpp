@@ -75,6 +75,7 @@ class SolverMonitor {
   const RadiositySystem& system_;
   const SolverOptions& options_;
   double emitted_2_ = 1, emitted_max_ = 1, emitted_power_ = 1, first_residual_ = -1;
+  double scale_ = 1;  // a power of two near the largest E: squares are summed scaled by it
   double solving_seconds_ = 0;
   bool on_unshot_;
   Timer clock_;

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gi/core/norms.hpp"
 #include "gi/radiosity/system/solver.hpp"
 
 namespace gi {
@@ -35,9 +36,12 @@ SolverMonitor::SolverMonitor(std::string method, const RadiositySystem& system, 
                              bool on_unshot)
     : system_(system), options_(options), on_unshot_(on_unshot) {
   result_.method = std::move(method);
+  // Squares are summed scaled by a power of two near the largest E (core/norms.hpp): a
+  // light of 1e-300 has squares that are 0 in double, and its residuals would all be 0.
+  scale_ = power_of_two_scale(largest_channel(system.emission));
   double e2 = 0, emax = 0, p = 0;
   for (int i = 0; i < system.size(); ++i) {
-    e2 += dot(system.emission[i], system.emission[i]);
+    e2 += length_squared(scale_ * system.emission[i]);
     emax = std::max(emax, max_component(system.emission[i]));
     p += system.area[i] * mean(system.emission[i]);
   }
@@ -56,7 +60,7 @@ bool SolverMonitor::stop_after(int step, const std::vector<Color>& B, const std:
   double r2 = 0, rmax = 0, unshot = 0;
   bool finite = true;
   for (int i = 0; i < system_.size(); ++i) {
-    r2 += dot(r[i], r[i]);
+    r2 += length_squared(scale_ * r[i]);
     rmax = std::max(rmax, max_component(glm::abs(r[i])));
     unshot += system_.area[i] * mean(glm::abs(r[i]));
     finite = finite && is_finite(B[i]);
@@ -65,12 +69,12 @@ bool SolverMonitor::stop_after(int step, const std::vector<Color>& B, const std:
   row.residual_inf = rmax / emitted_max_;
   row.unshot = unshot / emitted_power_;
   if (options_.reference) {
+    const std::vector<Color>& reference = *options_.reference;
+    const double s = power_of_two_scale(largest_channel(reference));
     double d2 = 0, b2 = 0;
-    for (int i = 0; i < system_.size(); ++i) {
-      const Color d = B[i] - (*options_.reference)[i];
-      d2 += dot(d, d), b2 += dot((*options_.reference)[i], (*options_.reference)[i]);
-    }
-    row.error = b2 > 0 ? std::sqrt(d2 / b2) : std::sqrt(d2);
+    for (int i = 0; i < system_.size(); ++i)
+      d2 += length_squared(s * (B[i] - reference[i])), b2 += length_squared(s * reference[i]);
+    row.error = b2 > 0 ? std::sqrt(d2 / b2) : std::sqrt(d2) / s;
   }
   if (first_residual_ < 0) first_residual_ = row.residual_2;
   // Divergence is a status, reported before the numbers turn into NaN.
