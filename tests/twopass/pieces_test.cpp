@@ -75,7 +75,7 @@ TEST(Specular, GlassSplitsByTheExactFresnelFraction) {
   glass.transmission = gi::Color(1.0);
   glass.ior = 1.5;
   const gi::Hit hit{1.0, vec3(0, 0, 0), vec3(0, 0, 1), 0};
-  const gi::SpecularRays r = gi::specular_rays(glass, gi::Ray{vec3(0, 0, 1), vec3(0, 0, -1)}, hit);
+  const gi::SpecularRays r = gi::specular_rays(glass, gi::Ray{vec3(0, 0, 1), vec3(0, 0, -1)}, hit, 1.0);
   ASSERT_EQ(r.count, 2);
   EXPECT_NEAR(r.rays[0].weight.x, 0.04, 1e-12) << "((1.5 - 1) / (1.5 + 1))^2 reflected at normal incidence";
   EXPECT_NEAR(r.rays[1].weight.x, 0.96, 1e-12);
@@ -83,7 +83,7 @@ TEST(Specular, GlassSplitsByTheExactFresnelFraction) {
   EXPECT_LT(r.rays[1].ray.origin.z, 0) << "the transmitted ray starts inside";
   // From inside at 60 degrees, past the critical angle asin(1/1.5) = 41.8 degrees: all reflected.
   const vec3 d = gi::normalize(vec3(std::sin(gi::pi / 3), 0, std::cos(gi::pi / 3)));
-  const gi::SpecularRays tir = gi::specular_rays(glass, gi::Ray{-d, d}, gi::Hit{1.0, vec3(0), vec3(0, 0, 1), 0});
+  const gi::SpecularRays tir = gi::specular_rays(glass, gi::Ray{-d, d}, gi::Hit{1.0, vec3(0), vec3(0, 0, 1), 0}, 1.0);
   ASSERT_EQ(tir.count, 1);
   EXPECT_DOUBLE_EQ(tir.rays[0].weight.x, 1.0);
 }
@@ -92,7 +92,7 @@ TEST(Specular, AMirrorReflectsWithItsReflectance) {
   gi::Material mirror;
   mirror.mirror = gi::Color(0.95);
   const gi::SpecularRays r =
-      gi::specular_rays(mirror, gi::Ray{vec3(-1, 1, 0), gi::normalize(vec3(1, -1, 0))}, gi::Hit{1.4, vec3(0), vec3(0, 1, 0), 0});
+      gi::specular_rays(mirror, gi::Ray{vec3(-1, 1, 0), gi::normalize(vec3(1, -1, 0))}, gi::Hit{1.4, vec3(0), vec3(0, 1, 0), 0}, 1.0);
   ASSERT_EQ(r.count, 1);
   EXPECT_DOUBLE_EQ(r.rays[0].weight.y, 0.95);
   EXPECT_NEAR(r.rays[0].ray.direction.y, std::sqrt(0.5), 1e-12);

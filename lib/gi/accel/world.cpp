@@ -100,6 +100,7 @@ Acceleration acceleration_from_name(const std::string& text) {
 
 World make_world(Scene scene, Acceleration acceleration, const BvhSettings& settings) {
   World world{std::move(scene), acceleration, {}, {}, {}, {}};
+  world.scale = scene_scale(world.scene);
   if (acceleration == Acceleration::BruteForce) world.packed = pack(world.scene.spheres);
   if (acceleration == Acceleration::Bvh) world.bvh = build_bvh(world.scene, settings);
   if (acceleration == Acceleration::FastBvh) {

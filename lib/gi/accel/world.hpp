@@ -7,6 +7,7 @@
 #include "gi/accel/bvh_fast.hpp"
 #include "gi/accel/traversal_counts.hpp"
 #include "gi/geometry/packed_spheres.hpp"
+#include "gi/scene/scene_scale.hpp"
 
 namespace gi {
 
@@ -36,10 +37,12 @@ struct World {
   FastBvh fast_bvh;         // Acceleration::FastBvh only
   std::vector<Aabb> boxes;  // Acceleration::BoundingBoxes only: the spheres' boxes, then the quads'
   PackedSpheres packed;     // Acceleration::BruteForce only: the spheres, coordinate by coordinate
+  double scale = 1;         // scene_scale(scene): what rays leaving a surface are offset relative to
 };
 
 // Takes the scene and builds what the acceleration needs: the tree (with `settings`)
-// or one box per object. Throws std::invalid_argument for settings out of range.
+// or one box per object; measures its scale. Throws std::invalid_argument for settings
+// out of range.
 World make_world(Scene scene, Acceleration acceleration = Acceleration::Bvh, const BvhSettings& settings = {});
 
 // The nearest hit with t in [ray.t_min, ray.t_max], or nothing: whatever the

@@ -10,21 +10,28 @@ namespace gi {
 
 namespace {
 
+// The size round-off in a point's coordinates is relative to: the coordinates' own,
+// plus a thousandth of the scene's scale (scene_scale.hpp) for a point near the
+// origin, whose round-off comes from where its ray started. Relative to the scene
+// alone, so the same picture at any scale (Cornell box in mm, furnace in m alike);
+// 1 + the coordinates on the Cornell box (scale 1024), as it was first tuned.
+double size_at(const vec3& p, double scale) {
+  return scale / 1024 + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+}
+
 // How far a new ray starts off its surface, along the normal on the side it leaves
-// from: relative to the coordinates' size, so that round-off in the hit point cannot
-// put the origin behind the surface (Cornell box in mm, furnace in m alike).
-vec3 offset_origin(const vec3& point, const vec3& n, const vec3& direction) {
-  const double scale = 1 + std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
-  return point + (dot(direction, n) > 0 ? 1e-9 : -1e-9) * scale * n;
+// from: 1e-9 of size_at, so that round-off in the hit point cannot put the origin
+// behind the surface.
+vec3 offset_origin(const vec3& point, const vec3& n, const vec3& direction, double scale) {
+  return point + (dot(direction, n) > 0 ? 1e-9 : -1e-9) * size_at(point, scale) * n;
 }
 
 // Is nothing between x (leaving along n's side) and the light point y?
 bool unoccluded(const World& world, const vec3& x, const vec3& n, const vec3& y) {
-  const vec3 origin = offset_origin(x, n, y - x);
+  const vec3 origin = offset_origin(x, n, y - x, world.scale);
   const vec3 to_light = y - origin;
   const double distance = length(to_light);
-  const double scale = 1 + std::max({std::abs(y.x), std::abs(y.y), std::abs(y.z)});
-  return !any_hit(world, Ray{origin, to_light / distance, 0.0, distance - 1e-9 * scale});
+  return !any_hit(world, Ray{origin, to_light / distance, 0.0, distance - 1e-9 * size_at(y, world.scale)});
 }
 
 }  // namespace
@@ -89,7 +96,7 @@ Color path_radiance(const PathScene& scene, const Ray& camera_ray, const PathSet
     after_specular = next->specular;
     p_bsdf = next->pdf;
     previous = hit->point;
-    ray = Ray{offset_origin(hit->point, n, next->wi), next->wi};
+    ray = Ray{offset_origin(hit->point, n, next->wi, scene.world.scale), next->wi};
 
     // ---- Possibly terminate the path with Russian roulette ---------------------------
     if (bounce + 1 >= settings.roulette_depth && !russian_roulette(beta, rng.uniform())) break;

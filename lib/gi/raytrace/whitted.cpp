@@ -30,15 +30,16 @@ vec3 read_double_by_double(const vec3& v) {
   const Material& material = world.scene.materials[hit.material];
   const Color kd = diffuse_at(material, point);
   Color colour = material.emission + material.ambient * kd * world.scene.ambient_light;
+  const double epsilon = settings.epsilon * world.scale;  // relative to the scene's size (scene_scale.hpp)
   // Each shadow ray begins with a square root and a division in a chain (shadow_ray),
   // about 30 cycles that its sphere tests wait for. So the next light's ray is made
   // before this light's is traced: the processor works out the next chain during the
   // trace instead of after it. The same operations as one light at a time: same bytes.
   const std::vector<PointLight>& lights = world.scene.lights;
-  Ray next = lights.empty() ? Ray{} : shadow_ray(point, n, lights[0].position, settings.epsilon);
+  Ray next = lights.empty() ? Ray{} : shadow_ray(point, n, lights[0].position, epsilon);
   for (std::size_t i = 0; i < lights.size(); ++i) {
     const Ray shadow = next;
-    if (i + 1 < lights.size()) next = shadow_ray(point, n, lights[i + 1].position, settings.epsilon);
+    if (i + 1 < lights.size()) next = shadow_ray(point, n, lights[i + 1].position, epsilon);
     const vec3& l = shadow.direction;
     if (dot(n, l) <= 0) continue;  // light behind the surface: no shadow ray needed
     counts.count(RayKind::Shadow, depth);
@@ -46,7 +47,7 @@ vec3 read_double_by_double(const vec3& v) {
   }
   for (const QuadLight& light : world.scene.area_lights) {
     const auto reaches = [&](const vec3& y) {  // S(x, y): does the shadow ray get to y?
-      const Ray shadow = shadow_ray(point, n, y, settings.epsilon);
+      const Ray shadow = shadow_ray(point, n, y, epsilon);
       if (dot(n, shadow.direction) <= 0) return false;  // y is behind the surface
       counts.count(RayKind::Shadow, depth);
       return !any_hit(world, shadow);
@@ -92,14 +93,15 @@ Color trace(const World& world, const Ray& ray, const TraceSettings& settings, R
     const double c = max_component(contribution * k);
     return c > 0 && c >= settings.min_contribution;
   };
+  const double epsilon = settings.epsilon * world.scale;  // relative to the scene's size (scene_scale.hpp)
   if (worth_tracing(k_r)) {
     counts.count(RayKind::Reflected, depth + 1);
-    const Ray reflected{hit->point + settings.epsilon * n, reflect(ray.direction, n)};
+    const Ray reflected{hit->point + epsilon * n, reflect(ray.direction, n)};
     colour += k_r * trace(world, reflected, settings, counts, rng, depth + 1, contribution * k_r);
   }
   if (transmitted && worth_tracing(k_t)) {
     counts.count(RayKind::Transmitted, depth + 1);
-    const Ray refracted{hit->point - settings.epsilon * n, normalize(*transmitted)};
+    const Ray refracted{hit->point - epsilon * n, normalize(*transmitted)};
     colour += k_t * trace(world, refracted, settings, counts, rng, depth + 1, contribution * k_t);
   }
   return colour;

@@ -13,7 +13,9 @@ namespace gi {
 struct TraceSettings {
   int max_depth = 8;               // 0: eye rays and shadow rays only
   double min_contribution = 0.0;   // 0: never stop early
-  double epsilon = 1e-6;           // how far secondary rays start off a surface (scene units)
+  // How far secondary rays start off a surface, as a fraction of the scene's scale
+  // (scene_scale.hpp; World::scale): 1e-6 scene units at Whitted's scale 16.
+  double epsilon = 6.25e-8;
   SoftShadowSettings soft_shadows;  // shadow rays per area light (lesson 04)
 };
 

@@ -22,13 +22,16 @@ CameraFrame camera_frame(const Camera& camera, int width, int height) {
   frame.eye = camera.eye;
   frame.right = pixel * right_unit;
   frame.down = -pixel * up_unit;
-  frame.top_left = camera.eye + forward - 0.5 * width * frame.right - 0.5 * height * frame.down;
+  frame.top_left = forward - 0.5 * width * frame.right - 0.5 * height * frame.down;
   return frame;
 }
 
+// The image plane one unit in front of the eye, its points taken from the eye: added
+// to the eye and subtracted again, a direction would lose the eye's digits (half of
+// them at an eye 10^8 from the origin) and a scene in km would look at another
+// picture than the same scene in m.
 Ray primary_ray(const CameraFrame& frame, double x, double y) {
-  const vec3 through = frame.top_left + x * frame.right + y * frame.down;
-  return Ray{frame.eye, normalize(through - frame.eye)};
+  return Ray{frame.eye, normalize(frame.top_left + x * frame.right + y * frame.down)};
 }
 
 }  // namespace gi

@@ -13,12 +13,12 @@ struct Camera {
 };
 
 // The image plane set up for one image size: pixel (x, y) -- y grows downwards --
-// is the point top_left + x * right + y * down, at distance 1 in front of the eye.
+// is the point eye + top_left + x * right + y * down, at distance 1 in front of the eye.
 struct CameraFrame {
   vec3 eye;
-  vec3 top_left;
-  vec3 right;  // one pixel to the right
-  vec3 down;   // one pixel down
+  vec3 top_left;  // the image's top-left corner, seen from the eye
+  vec3 right;     // one pixel to the right
+  vec3 down;      // one pixel down
 };
 
 // Throws std::invalid_argument for a degenerate camera (eye at look_at, up parallel

@@ -14,7 +14,7 @@ Color reflected_radiosity_along(const EyeWorld& eye, const RadiosityHandoff& han
     return dot(ray.direction, y->hit.normal) < 0 ? reflected_radiosity_at(handoff, y->element, y->hit.point)
                                                   : Color(0.0);  // the back of a surface
   if (depth >= specular_gather_depth) return Color(0.0);
-  const SpecularRays next = specular_rays(eye.world.scene.materials[y->hit.material], ray, y->hit);
+  const SpecularRays next = specular_rays(eye.world.scene.materials[y->hit.material], ray, y->hit, eye.world.scale);
   Color sum(0.0);
   for (int i = 0; i < next.count; ++i)
     sum += next.rays[i].weight * reflected_radiosity_along(eye, handoff, next.rays[i].ray, depth + 1);

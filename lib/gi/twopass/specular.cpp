@@ -1,14 +1,15 @@
 #include "gi/twopass/specular.hpp"
 
 #include "gi/raytrace/optics.hpp"
+#include "gi/scene/scene_scale.hpp"
 
 namespace gi {
 
-SpecularRays specular_rays(const Material& m, const Ray& ray, const Hit& hit) {
+SpecularRays specular_rays(const Material& m, const Ray& ray, const Hit& hit, double scale) {
   const vec3& d = ray.direction;
   const bool entering = dot(d, hit.normal) < 0;
   const vec3 n = entering ? hit.normal : -hit.normal;  // on the side d comes from
-  const double eps = 1e-6 * hit.t + 1e-9;
+  const double eps = 1e-6 * hit.t + offset_floor(scale);
   SpecularRays out;
   const auto add = [&](const Color& weight, const vec3& side, const vec3& w) {
     out.rays[out.count++] = {weight, Ray{hit.point + eps * side, w}};

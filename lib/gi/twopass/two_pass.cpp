@@ -74,7 +74,7 @@ struct EyePass {
   // Mirror and glass: the light of the one or two rays they send on (specular.hpp).
   Color specular(const Ray& ray, const EyeHit& hit, int depth, Rng& rng) const {
     if (depth >= settings.max_depth) return Color(0.0);
-    const SpecularRays next = specular_rays(eye.world.scene.materials[hit.hit.material], ray, hit.hit);
+    const SpecularRays next = specular_rays(eye.world.scene.materials[hit.hit.material], ray, hit.hit, eye.world.scale);
     Color L(0.0);
     for (int i = 0; i < next.count; ++i) L += next.rays[i].weight * radiance(next.rays[i].ray, depth + 1, rng);
     return L;
