@@ -84,7 +84,8 @@ int main(int argc, char** argv) {
   lesson.add_image_size(settings.width, settings.height);
   lesson.options().add("--accel", accel, "how rays find what they hit (lesson 05)", gi::acceleration_names());
   lesson.add_scene(scene_name, gi::scene_names(), [&](const std::string& choice, auto& warnings) {
-    scene = choice == "soft" ? gi::soft_shadow_scene(light_size) : gi::load_scene(choice, warnings);
+    scene = choice == "soft" ? gi::soft_shadow_scene(light_size)
+                             : gi::load_scene(choice, warnings, lesson.scene_file_rules());
     if (scene.area_lights.empty())
       throw gi::OptionError("--scene " + choice + " has no quad light, and soft shadows need one (\"quad_lights\")");
   });

@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
   gi::RadiosityScene scene;
   lesson.add_image_size(display.width, display.height);
   lesson.add_scene(scene_name, gi::radiosity_scene_names(), [&](const std::string& choice, auto& warnings) {
-    scene = gi::load_radiosity_scene(choice, changes, most_elements, warnings);
+    scene = gi::load_radiosity_scene(choice, changes, most_elements, warnings, lesson.scene_file_rules());
   });
   lesson.add_scene_changes(changes);
   lesson.options()

@@ -208,8 +208,24 @@ TEST(RadiosityFromFile, ChoicesNameABuiltInSceneOrAFileAndChangesApply) {
     (void)gi::load_radiosity_scene(cornell, {}, 10, warnings);
     FAIL() << "no exception";
   } catch (const gi::SceneError& e) {
-    EXPECT_EQ(std::string(e.what()), cornell + ": 19 surfaces (a triangle makes three), more than the 10 patches "
-                                               "this lesson solves for in seconds");
+    // Its 19 polygons are counted as they are read: the reading stops at the 11th.
+    EXPECT_EQ(std::string(e.what()), cornell + ":65:18: polygons[10].corners: more than 10 polygons (quads, boxes' "
+                                               "faces, polygons and mesh faces together), the most this lesson takes");
+  }
+  // Four triangles pass the reading's count, and make twelve surfaces.
+  const auto triangles = gi_test::write_text(gi_test::scratch_folder("triangles") / "triangles.json",
+                                             "{" + gi_test::camera + R"(,
+    "materials": [{"name": "lamp", "emission": 1}],
+    "polygons": [{"corners": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "material": "lamp"},
+                 {"corners": [[0, 0, 1], [1, 0, 1], [0, 1, 1]], "material": "lamp"},
+                 {"corners": [[0, 0, 2], [1, 0, 2], [0, 1, 2]], "material": "lamp"},
+                 {"corners": [[0, 0, 3], [1, 0, 3], [0, 1, 3]], "material": "lamp"}]})");
+  try {
+    (void)gi::load_radiosity_scene(triangles.string(), {}, 10, warnings);
+    FAIL() << "no exception";
+  } catch (const gi::SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), triangles.string() + ": 12 surfaces (a triangle makes three), more than the 10 "
+                                                          "patches this lesson solves for in seconds");
   }
 }
 

@@ -126,6 +126,10 @@ TEST(Json, MessagesQuoteInputAsOnePrintableLine) {
   // printable: UTF-8 characters stay, control characters and stray bytes become \xNN.
   EXPECT_EQ(gi::printable("caf\xC3\xA9 \xF0\x9F\x98\x80"), "caf\xC3\xA9 \xF0\x9F\x98\x80");
   EXPECT_EQ(gi::printable(std::string("a\nb\0c\x1b[1m\x7f\xFF\xC3", 12)), "a\\x0ab\\x00c\\x1b[1m\\x7f\\xff\\xc3");
+  // C1 controls (U+009B is the terminal's one-byte escape) and bidirectional overrides.
+  EXPECT_EQ(gi::printable("a\xC2\x9B" "2Jb"), "a\\xc2\\x9b2Jb");
+  EXPECT_EQ(gi::printable("\xE2\x80\xAEtxt.exe"), "\\xe2\\x80\\xaetxt.exe");  // U+202E RIGHT-TO-LEFT OVERRIDE
+  EXPECT_EQ(gi::printable("\xE2\x81\xA6x"), "\\xe2\\x81\\xa6x");              // U+2066 LEFT-TO-RIGHT ISOLATE
   // A name that a JSON escape filled with a newline and a NUL: the error is one line,
   // and the NUL no longer ends it (what() is a C string).
   const gi::SceneError e({"f.json", 3, 7, "materials[0]"}, "no material is named 'a\nb" + std::string(1, '\0') + "c'");

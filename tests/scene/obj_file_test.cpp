@@ -90,8 +90,12 @@ TEST(ObjFile, EveryErrorNamesLineAndColumn) {
       {std::string("v 0 0 0\n\x01\0\xC3\xBF junk\n", 17), "m.obj:2:1: a control character (code 1): the file is not OBJ text"},
       {square + "f 1 2\x1b[31m 3\n", "m.obj:5:6: a control character (code 27): the file is not OBJ text"},
       {square + "usemtl caf\xC3\xA9\r\nf 1 2 3\r\nx\xC3\xA9\r\n",
-       "m.obj:7:1: 'x\xC3\xA9' is not a statement this reader knows (v, f, usemtl; vt, vn, mtllib, o, g, s are "
-       "skipped): export triangles and quadrilaterals only"},  // CR and UTF-8 are text
+       "m.obj:7:1: the line begins with no statement this reader knows (v, f, usemtl; vt, vn, mtllib, o, g, s are "
+       "skipped): export triangles and quadrilaterals only"},  // CR and UTF-8 are text, but no OBJ keyword
+      // A first line that is no keyword is not quoted: the file may be a password file.
+      {"root:x:0:0:root:/root:/bin/bash\n", "m.obj:1:1: the line begins with no statement this reader knows (v, f, "
+                                            "usemtl; vt, vn, mtllib, o, g, s are skipped): export triangles and "
+                                            "quadrilaterals only"},
   };
   for (const auto& [text, message] : cases) EXPECT_EQ(error_of(text), message) << "file:\n" << text;
 }

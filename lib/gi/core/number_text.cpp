@@ -56,20 +56,11 @@ std::string real_problem_text(RealProblem problem) {
 
 std::string quoted_text(std::string_view text) {
   const std::size_t most = 40;
-  std::string out;
-  for (std::size_t i = 0; i < text.size() && i < most; ++i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c >= 0x20 && c < 0x7F) {
-      out += static_cast<char>(c);
-    } else {
-      const char* hex = "0123456789abcdef";
-      out += "\\x";
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  if (text.size() > most) out += "...";
-  return out;
+  std::size_t end = 0;
+  for (std::size_t characters = 0; end < text.size() && characters < most; ++characters)
+    do ++end;  // a character and its UTF-8 continuation bytes
+    while (end < text.size() && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80);
+  return std::string(text.substr(0, end)) + (end < text.size() ? "..." : "");
 }
 
 }  // namespace gi

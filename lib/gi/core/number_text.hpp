@@ -27,9 +27,10 @@ RealProblem real_problem(double v);
 // The sentence for a problem, as "must be ...": "must be a finite number".
 std::string real_problem_text(RealProblem problem);
 
-// Text a user typed, made safe to quote in a one-line message: at most 40
-// characters, control characters and bytes past ASCII written as \xNN, so that
-// an escape sequence or a newline cannot rewrite the terminal or split the line.
+// Text a user typed, cut to quote in a one-line message: at most 40 characters (UTF-8
+// characters whole), then "...". A lesson's every message leaves through run_lesson,
+// which writes control characters as \xNN (printable, utf8.hpp), so that a quoted
+// escape sequence or newline cannot rewrite the terminal or split the line.
 std::string quoted_text(std::string_view text);
 
 }  // namespace gi

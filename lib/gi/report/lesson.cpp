@@ -89,6 +89,10 @@ void Lesson::add_scene(std::string& choice, const std::vector<std::string>& name
   for (const std::string& n : names) listed += (listed.empty() ? "" : ", ") + n;
   options_.add("--scene", choice, "the scene: a built-in one (" + listed + ") or a scene file NAME.json " +
                                       "(lessons/scenes/ has examples; docs/scene_files.md)");
+  options_.add_parsed("--mesh-folder", "DIR",
+                      "a scene file may also read its OBJ meshes from below DIR (default: only from below its own "
+                      "folder)",
+                      [this](const std::string& text) { scene_file_rules_.mesh_folder = text; });
   add_check([this, &choice, load] {
     std::vector<std::string> warnings;
     try {
@@ -103,8 +107,8 @@ void Lesson::add_scene(std::string& choice, const std::vector<std::string>& name
 }
 
 void Lesson::add_scene(std::string& choice, Scene& scene) {
-  add_scene(choice, scene_names(), [&scene](const std::string& c, std::vector<std::string>& warnings) {
-    scene = load_scene(c, warnings);
+  add_scene(choice, scene_names(), [this, &scene](const std::string& c, std::vector<std::string>& warnings) {
+    scene = load_scene(c, warnings, scene_file_rules_);
   });
 }
 

@@ -12,6 +12,7 @@
 #include "gi/report/scene_options.hpp"
 #include "gi/report/table.hpp"
 #include "gi/scene/scene.hpp"
+#include "gi/scene/scene_file.hpp"
 
 namespace gi {
 
@@ -46,8 +47,11 @@ class Lesson {
   // check, before any work (call add_scene before the checks that look at the scene):
   // a bad file is refused with status 2 and one line, "file:line:column: path:
   // message"; the warnings it adds are printed on stderr.
+  // Adds --mesh-folder DIR too: where else a scene file may read its meshes from
+  // (SceneFileRules, scene_file.hpp); a loader hands scene_file_rules() to the reader.
   using SceneLoader = std::function<void(const std::string& choice, std::vector<std::string>& warnings)>;
   void add_scene(std::string& choice, const std::vector<std::string>& names, SceneLoader load);
+  const SceneFileRules& scene_file_rules() const { return scene_file_rules_; }
   // The ray tracer's: a built-in scene (builtin_scenes.hpp) or a file, into `scene`.
   void add_scene(std::string& choice, Scene& scene);
   // --camera EYE:LOOK_AT[:FOV] and --light-scale NAME=FACTOR,... into `changes`
@@ -108,6 +112,7 @@ class Lesson {
   Options options_;
   CommonOptions common_;
   std::vector<std::function<void()>> checks_;
+  SceneFileRules scene_file_rules_;
   std::filesystem::path out_;
   std::vector<std::string> command_;
   std::vector<Output> outputs_;

@@ -73,9 +73,10 @@ class ObjReader {
       material_ = static_cast<int>(at->second);
     } else if (keyword != "vt" && keyword != "vn" && keyword != "mtllib" && keyword != "o" && keyword != "g" &&
                keyword != "s") {
-      fail(w[0].column, "", "'" + std::string(keyword.substr(0, 40)) +
-                                "' is not a statement this reader knows (v, f, usemtl; vt, vn, mtllib, o, g, s are "
-                                "skipped): export triangles and quadrilaterals only");
+      std::string what = "the line begins with no statement";
+      if (looks_like_a_keyword(keyword)) what = std::string("'").append(keyword).append("' is not a statement");
+      fail(w[0].column, "", what + " this reader knows (v, f, usemtl; vt, vn, mtllib, o, g, s are skipped): export "
+                                   "triangles and quadrilaterals only");
     }
   }
 
@@ -85,6 +86,14 @@ class ObjReader {
   }
 
  private:
+  // OBJ's statements are short lower-case words (curv, cstype, bmat). A first word of
+  // another shape is quoted by no message: the file is perhaps no OBJ file at all, and
+  // its first line (a password file's, a key's) is not for a terminal or a log.
+  static bool looks_like_a_keyword(std::string_view word) {
+    return word.size() <= 16 && word[0] >= 'a' && word[0] <= 'z' &&
+           std::all_of(word.begin(), word.end(), [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; });
+  }
+
   [[noreturn]] void fail(int column, const std::string& path, const std::string& message) const {
     throw SceneError({name_, line_, column, path}, message);
   }
@@ -135,7 +144,8 @@ class ObjReader {
       fail(w[0].column, "f", "a face of " + std::to_string(corners) + " corners; only triangles and quadrilaterals " +
                                  "(triangulate the mesh when you export it)");
     if (mesh_.faces.size() >= limits_.max_faces)
-      fail(w[0].column, "f", "more than " + std::to_string(limits_.max_faces) + " faces");
+      fail(w[0].column, "f", limits_.why_max_faces.empty() ? "more than " + std::to_string(limits_.max_faces) + " faces"
+                                                           : limits_.why_max_faces);
     ObjFace f;
     f.polygon.count = static_cast<int>(corners);
     for (std::size_t k = 0; k < corners; ++k) f.polygon.corners[k] = corner(w[k + 1]);

@@ -27,6 +27,7 @@ struct ObjLimits {
   std::uintmax_t max_bytes = 128u << 20;
   std::size_t max_vertices = 1'000'000;
   std::size_t max_faces = 1'000'000;
+  std::string why_max_faces;  // the message when max_faces is passed; "" says "more than N faces"
 };
 
 // Reads the part of OBJ a scene needs, line by line:

@@ -30,8 +30,8 @@ bool names_a_file(const std::string& choice) {
   return choice.find('/') != std::string::npos || (lower.size() > 5 && lower.ends_with(".json"));
 }
 
-Scene load_scene(const std::string& choice, std::vector<std::string>& warnings) {
-  if (names_a_file(choice)) return ray_tracing_scene(read_scene_file(choice), warnings);
+Scene load_scene(const std::string& choice, std::vector<std::string>& warnings, const SceneFileRules& rules) {
+  if (names_a_file(choice)) return ray_tracing_scene(read_scene_file(choice, rules), warnings);
   const std::vector<std::string> names = scene_names();
   if (std::find(names.begin(), names.end(), choice) == names.end()) {
     std::string known;

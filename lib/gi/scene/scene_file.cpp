@@ -20,7 +20,9 @@ using Fields = SchemaReader::Fields;
 // where it stands. The keys are documented in scene_file.hpp.
 class SceneReader {
  public:
-  explicit SceneReader(const fs::path& file) : path_(file), schema_(file.string()) { out_.file = file.string(); }
+  SceneReader(const fs::path& file, const SceneFileRules& rules) : path_(file), rules_(rules), schema_(file.string()) {
+    out_.file = file.string();
+  }
 
   SceneFile read(const std::string& text) {
     const JsonValue root = parse_json(text, schema_.file());
@@ -173,6 +175,7 @@ class SceneReader {
   void add_polygon(const FlatPolygon& shape, int material, std::string name, bool from_quads, const JsonValue& at,
                    const std::string& path) {
     if (const std::string problem = polygon_problem(shape); !problem.empty()) schema_.fail(at, path, problem);
+    if (out_.polygons.size() >= rules_.max_polygons) schema_.fail(at, path, too_many_polygons());
     out_.polygons.push_back({shape, material, std::move(name), from_quads});
   }
 
@@ -214,23 +217,62 @@ class SceneReader {
     add_polygon(shape, material_of(f, path), name_or(f, path), false, *f["corners"], path + ".corners");
   }
 
+  std::string too_many_polygons() const {
+    return "more than " + std::to_string(rules_.max_polygons) +
+           " polygons (quads, boxes' faces, polygons and mesh faces together), the most this lesson takes";
+  }
+
+  // The folders meshes may come from (SceneFileRules), symbolic links followed.
+  std::vector<fs::path> mesh_folders() const {
+    std::vector<fs::path> folders;
+    std::error_code error;
+    const fs::path own = fs::weakly_canonical(fs::absolute(path_, error).parent_path(), error);
+    if (!error) folders.push_back(own);
+    if (!rules_.mesh_folder.empty()) {
+      const fs::path extra = fs::weakly_canonical(fs::absolute(rules_.mesh_folder, error), error);
+      if (!error) folders.push_back(extra);
+    }
+    return folders;
+  }
+
+  static bool below(const fs::path& file, const fs::path& folder) {
+    const fs::path rest = file.lexically_relative(folder);
+    return !rest.empty() && *rest.begin() != ".." && !rest.is_absolute();
+  }
+
   void mesh(const JsonValue& v, const std::string& path) {
     const Fields f = schema_.object(v, path, {{"file", true}, {"material"}});
-    const std::string relative = schema_.text(*f["file"], path + ".file");
+    const JsonValue& at = *f["file"];
+    const std::string relative = schema_.text(at, path + ".file");
     const std::string shown = (path_.parent_path() / relative).lexically_normal().string();
     const int fallback = f["material"] ? material_of(f, path) : -1;
     const fs::path file = path_.parent_path() / relative;
+    // Where it really is, asked of nothing but the path (and the links on it), so
+    // that a refusal says nothing about a file outside.
     std::error_code error;
-    if (!fs::exists(file, error)) schema_.fail(*f["file"], path + ".file", "no such file: " + shown);
+    const fs::path real = fs::weakly_canonical(fs::absolute(file, error), error);
+    const std::vector<fs::path> folders = mesh_folders();
+    if (error || std::none_of(folders.begin(), folders.end(), [&](const fs::path& d) { return below(real, d); }))
+      schema_.fail(at, path + ".file",
+                   "a mesh must lie below the scene file's folder" +
+                       std::string(rules_.mesh_folder.empty() ? "" : " or below " + rules_.mesh_folder.string()) +
+                       " (--mesh-folder DIR allows another): " + shown);
+    if (!fs::exists(real, error)) schema_.fail(at, path + ".file", "no such file: " + shown);
     // Before its size: a folder or a device has none (file_size fails, or /dev/zero never ends).
-    if (!fs::is_regular_file(file, error)) schema_.fail(*f["file"], path + ".file", "not a file one can read a mesh from: " + shown);
+    if (!fs::is_regular_file(real, error)) schema_.fail(at, path + ".file", "not a file one can read a mesh from: " + shown);
+    std::string extension = real.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (extension != ".obj") schema_.fail(at, path + ".file", "a mesh is an OBJ file, its name ending in .obj: " + shown);
     const ObjLimits most;
-    mesh_bytes_ += fs::file_size(file, error);
+    mesh_bytes_ += fs::file_size(real, error);
     if (mesh_bytes_ > most.max_bytes)
-      schema_.fail(*f["file"], path + ".file", "the meshes together are larger than " + size_text(most.max_bytes));
+      schema_.fail(at, path + ".file", "the meshes together are larger than " + size_text(most.max_bytes));
+    // Faces are counted as they are read: the file stops at the scene's limit.
     ObjLimits limits;
-    limits.max_faces = most.max_faces - std::min(most.max_faces, mesh_faces_);
-    const ObjMesh obj = read_obj(file, shown, limits);
+    const std::size_t room = rules_.max_polygons - std::min(rules_.max_polygons, out_.polygons.size());
+    limits.max_faces = std::min(most.max_faces - std::min(most.max_faces, mesh_faces_), room);
+    if (limits.max_faces == room) limits.why_max_faces = too_many_polygons();
+    const ObjMesh obj = read_obj(real, shown, limits);
     mesh_faces_ += obj.faces.size();
     std::vector<int> used;  // the scene's index of each usemtl name, -1 if it has none
     for (const std::string& name : obj.material_names) used.push_back(find_material(name));
@@ -268,6 +310,7 @@ class SceneReader {
   }
 
   fs::path path_;
+  SceneFileRules rules_;
   SchemaReader schema_;
   SceneFile out_;
   const JsonValue* camera_at_ = nullptr;
@@ -280,11 +323,13 @@ class SceneReader {
 
 }  // namespace
 
-SceneFile read_scene_file(const fs::path& file) {
-  SceneReader reader(file);
+SceneFile read_scene_file(const fs::path& file, const SceneFileRules& rules) {
+  SceneReader reader(file, rules);
   return reader.read(reader.file_text());
 }
 
-SceneFile read_scene_text(const std::string& text, const fs::path& file) { return SceneReader(file).read(text); }
+SceneFile read_scene_text(const std::string& text, const fs::path& file, const SceneFileRules& rules) {
+  return SceneReader(file, rules).read(text);
+}
 
 }  // namespace gi

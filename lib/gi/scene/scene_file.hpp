@@ -46,7 +46,9 @@ namespace gi {
 //   polygons       array    {corners: 3 or 4 points, counter-clockwise seen from the
 //                           front, flat and convex (flat_polygon.hpp), material, name?}
 //   meshes         array    {file: an OBJ file, its path relative to this file
-//                           (obj_file.hpp), material?: name for faces before any usemtl}
+//                           (obj_file.hpp), its name ending in .obj, below this
+//                           file's folder (SceneFileRules); material?: name for faces
+//                           before any usemtl}
 //   point_lights   array    {position: point, intensity: colour, not black}
 //   quad_lights    array    {corner, edge_u, edge_v: points, intensity: colour, not black}
 //
@@ -79,11 +81,36 @@ struct SceneFile {
   std::vector<std::string> warnings;  // in the errors' format
 };
 
+// What a scene file may make a lesson read, and how much.
+//
+// Meshes: a scene file names OBJ files, and a scene file may come from anyone (a
+// classmate, a download, a hand-in an autograder runs). It reads meshes only from
+// below its own folder -- after every "..", and every symbolic link, is followed --
+// or from below `mesh_folder` when one is given (a lesson's --mesh-folder DIR), and
+// only files whose name ends in .obj. A path outside is refused before anything is
+// asked of it, so the message does not even say whether the file exists.
+//
+// What a message quotes: a scene file's errors show one character at the error's
+// position, an OBJ file's the word at fault (at most 40 characters; a line's first
+// word only when it has an OBJ keyword's shape, obj_file.cpp): both are files
+// the user named, on the command line or in the scene file, and passed the checks
+// above. Nothing is ever quoted from any other file.
+//
+// Size: `max_polygons` bounds the quads, boxes' faces, polygons and mesh faces of the
+// scene together, counted as they are read, so that reading stops at the limit rather
+// than after a million faces have been stored (a radiosity lesson passes the most
+// surfaces it solves for, each polygon being one surface at least).
+struct SceneFileRules {
+  std::filesystem::path mesh_folder;  // empty: meshes from below the scene file's folder only
+  std::size_t max_polygons = 1'000'000;
+};
+
 // Reads and checks a scene file (and the OBJ files it names). Throws SceneError.
-SceneFile read_scene_file(const std::filesystem::path& file);
+SceneFile read_scene_file(const std::filesystem::path& file, const SceneFileRules& rules = {});
 // The same for text already read: `file` names it in messages, and OBJ paths are
 // relative to its folder.
-SceneFile read_scene_text(const std::string& text, const std::filesystem::path& file);
+SceneFile read_scene_text(const std::string& text, const std::filesystem::path& file,
+                          const SceneFileRules& rules = {});
 
 // The ray tracer's scene: the file's scene with its polygons added as triangles, a
 // quadrilateral c0 c1 c2 c3 as (c0, c1, c2) and (c0, c2, c3). Adds a warning if no
@@ -95,6 +122,6 @@ bool names_a_file(const std::string& choice);
 
 // A built-in scene by name (builtin_scenes.hpp) or a scene file, for the ray tracer.
 // Throws std::invalid_argument for an unknown name, SceneError for a bad file.
-Scene load_scene(const std::string& choice, std::vector<std::string>& warnings);
+Scene load_scene(const std::string& choice, std::vector<std::string>& warnings, const SceneFileRules& rules = {});
 
 }  // namespace gi

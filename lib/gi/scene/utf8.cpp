@@ -1,5 +1,7 @@
 #include "gi/scene/utf8.hpp"
 
+#include <algorithm>
+
 namespace gi {
 
 std::size_t utf8_length(std::string_view text, std::size_t i) {
@@ -48,18 +50,40 @@ bool is_utf8(std::string_view text, int* bad_column) {
   return true;
 }
 
+namespace {
+
+// The code point of the UTF-8 character of n bytes at text[i].
+unsigned code_point(std::string_view text, std::size_t i, std::size_t n) {
+  static constexpr unsigned lead_bits[] = {0, 0x7F, 0x1F, 0x0F, 0x07};
+  unsigned code = static_cast<unsigned char>(text[i]) & lead_bits[n];
+  for (std::size_t k = 1; k < n; ++k) code = (code << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
+  return code;
+}
+
+// Characters that act on the terminal or on the line rather than show: C0 and C1
+// controls, DEL, and the bidirectional overrides and isolates, which would show the
+// rest of the line reversed (a quoted name could make the message read otherwise).
+bool acts(unsigned code) {
+  return code < 0x20 || (code >= 0x7F && code <= 0x9F) || (code >= 0x202A && code <= 0x202E) ||
+         (code >= 0x2066 && code <= 0x2069);
+}
+
+}  // namespace
+
 std::string printable(std::string_view text) {
   std::string out;
+  constexpr char hex[] = "0123456789abcdef";
   for (std::size_t i = 0; i < text.size();) {
-    const auto byte = static_cast<unsigned char>(text[i]);
-    if (const std::size_t n = utf8_length(text, i); n > 1 || (n == 1 && byte >= 0x20 && byte != 0x7F)) {
+    const std::size_t n = utf8_length(text, i);
+    if (n > 0 && !acts(code_point(text, i, n))) {
       out.append(text.substr(i, n));
       i += n;
       continue;
     }
-    constexpr char hex[] = "0123456789abcdef";
-    out += {'\\', 'x', hex[byte >> 4], hex[byte & 15]};
-    ++i;
+    for (std::size_t k = 0; k < std::max<std::size_t>(n, 1); ++k, ++i) {  // each byte of it as \xNN
+      const auto byte = static_cast<unsigned char>(text[i]);
+      out += {'\\', 'x', hex[byte >> 4], hex[byte & 15]};
+    }
   }
   return out;
 }

@@ -20,9 +20,11 @@ void append_utf8(std::string& out, unsigned code);
 bool is_utf8(std::string_view text, int* bad_column = nullptr);
 
 // The text as one readable line, for a message that quotes input (a name from a scene
-// file, a word of a mesh file, an option's value): control characters, which would cut
-// or split the line or drive the terminal, and bytes that are not UTF-8 are written
-// \xNN; UTF-8 characters stay as they are.
+// file, a word of a mesh file, an option's value): control characters (C0 and C1),
+// which would cut or split the line or drive the terminal, the bidirectional overrides
+// and isolates (U+202A-U+202E, U+2066-U+2069), which would show the line reordered,
+// and bytes that are not UTF-8 are written \xNN, byte by byte; other UTF-8
+// characters stay as they are.
 std::string printable(std::string_view text);
 
 }  // namespace gi

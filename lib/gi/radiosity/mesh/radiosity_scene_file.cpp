@@ -69,11 +69,13 @@ void check_meshable(const RadiosityScene& scene, const std::string& file, int mo
 }
 
 RadiosityScene load_radiosity_scene(const std::string& choice, const SceneChanges& changes, int most_surfaces,
-                                    std::vector<std::string>& warnings) {
+                                    std::vector<std::string>& warnings, const SceneFileRules& rules) {
   RadiosityScene scene;
   const std::vector<std::string> names = radiosity_scene_names(), ray_traced = scene_names();
   if (names_a_file(choice)) {
-    scene = radiosity_scene(read_scene_file(choice), warnings);
+    SceneFileRules limited = rules;  // every polygon is one surface at least
+    limited.max_polygons = std::min(limited.max_polygons, static_cast<std::size_t>(std::max(most_surfaces, 0)));
+    scene = radiosity_scene(read_scene_file(choice, limited), warnings);
     check_meshable(scene, choice, most_surfaces);
   } else if (std::find(names.begin(), names.end(), choice) != names.end()) {
     scene = make_radiosity_scene(choice);

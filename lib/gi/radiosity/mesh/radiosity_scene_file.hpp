@@ -28,8 +28,10 @@ void check_meshable(const RadiosityScene& scene, const std::string& file, int mo
 // command line's changes applied. Throws std::invalid_argument for an unknown name (or
 // a ray-tracing scene's), a degenerate camera or a light scale that names no light;
 // SceneError for a bad file.
+// A file is read under `rules` (scene_file.hpp), its polygons also limited to
+// `most_surfaces` as they are read: reading stops there, before any mesh is made.
 RadiosityScene load_radiosity_scene(const std::string& choice, const SceneChanges& changes, int most_surfaces,
-                                    std::vector<std::string>& warnings);
+                                    std::vector<std::string>& warnings, const SceneFileRules& rules = {});
 
 // Multiplies the emission of each surface a scale names. Throws std::invalid_argument,
 // listing the scene's lights, for a name no emitting surface has, and when the scales
