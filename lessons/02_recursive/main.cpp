@@ -3,6 +3,7 @@
 // contribution threshold. Each is measured in rays, time and error against a
 // deep reference render.
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -32,7 +33,10 @@ std::vector<gi::Cell> ray_row(const gi::Cell& first, const gi::RenderResult& r, 
                             r.counts.of(K::Transmitted), r.counts.total(), ms,
                             r.counts.total() / r.seconds * 1e-6};
   row.push_back(reference ? gi::Cell(gi::rmse(r.image, *reference)) : gi::Cell("-"));
-  row.push_back(reference ? gi::Cell(gi::psnr(r.image, *reference)) : gi::Cell("-"));
+  // A picture equal to its reference has no error to take the logarithm of: PSNR is
+  // infinite, shown as the word.
+  const double psnr = reference ? gi::psnr(r.image, *reference) : 0;
+  row.push_back(!reference ? gi::Cell("-") : std::isfinite(psnr) ? gi::Cell(psnr) : gi::Cell("identical"));
   return row;
 }
 

@@ -59,6 +59,22 @@ struct Box {
         system(gi::make_system(mesh, {})) {}
 };
 
+// The rows `remembered` keeps, one double per element for every patch shot: counted
+// before any work (element_count, the mesher's own arithmetic), so that --patches 5000
+// --elements-per-side 8 (13 GB of rows) is refused at once rather than run out of memory.
+void check_kept_rows(const gi::RadiosityScene& scene, int patches, int per_side) {
+  const gi::MeshSettings mesh{gi::patch_size_for(scene.surfaces, patches * per_side * per_side, per_side), per_side};
+  const double elements = gi::element_count(scene.surfaces, mesh), rows = elements / (per_side * per_side);
+  const double gigabytes = rows * elements * sizeof(double) / 1e9, most = 3.2;  // a 20 000-element matrix's
+  if (gigabytes > most)
+    throw gi::OptionError("--patches " + std::to_string(patches) + " with --elements-per-side " +
+                          std::to_string(per_side) + " makes " + gi::format_number(rows, 0, gi::Format::Fixed) +
+                          " patches of " + gi::format_number(elements, 0, gi::Format::Fixed) +
+                          " elements: the rows kept for shooting would take " +
+                          gi::format_number(gigabytes, 1, gi::Format::Fixed) + " GB, more than " +
+                          gi::format_number(most, 1, gi::Format::Fixed) + "; use fewer patches or elements per side");
+}
+
 // Patch p's row, computed the first time a shot asks for it and kept: a row depends
 // only on the geometry, not on the light being shot, and the converged answer and the
 // viewer's replay shoot the same patches again and again. The watched run below does
@@ -161,7 +177,7 @@ int main(int argc, char** argv) {
   gi::RadiosityScene scene;
   lesson.add_image_size(display.width, display.height);
   lesson.add_scene(scene_name, gi::radiosity_scene_names(), [&](const std::string& choice, auto& warnings) {
-    scene = gi::load_radiosity_scene(choice, changes, most_patches, warnings);
+    scene = gi::load_radiosity_scene(choice, changes, most_patches, warnings, lesson.scene_file_rules());
   });
   lesson.add_scene_changes(changes);
   lesson.options()
@@ -170,6 +186,7 @@ int main(int argc, char** argv) {
       .add("--resolution", hemicube.hemicube_resolution, "hemicube resolution", 10, 1000, gi::even)
       .add("--speed-elements", speed_elements, "elements for the timing to 1% unshot energy (docs/11 quotes 10 000)", 100, 100000)
       .add("--exposure", exposure, "multiplies the radiance before display", 0.01, 100.0);
+  lesson.add_check([&] { check_kept_rows(scene, patches, elements_per_side); });
   return lesson.run(argc, argv, [&] {
     display.threads = lesson.threads();
     display.seed = lesson.seed();

@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
   std::string ff = "hemicube", direct = "per-pixel", solver = "gauss-seidel";
   recipe.direct.light_cells = 4;
   lesson.options()
-      .add("--elements", recipe.elements, "about how many elements", 20, 20000)
+      .add("--elements", recipe.elements, "about how many elements, the mesh never past the matrix's 20 000", 20,
+           gi::max_matrix_elements)
       .add("--ff", ff, "form factors of the interreflection", {"hemicube", "monte-carlo"})
       .add("--rays", recipe.form_factors.rays, "Monte Carlo's rays per row", 1, 1 << 20)
       .add("--resolution", recipe.form_factors.hemicube_resolution,

@@ -203,12 +203,15 @@ void picture_table(const std::vector<Snapshot>& mis, const gi::PathReference& re
 }
 
 // The strategies' table: each at the last snapshot, and its efficiency 1 / (RMSE^2 t),
-// which does not change with the sample count (RMSE^2 falls as 1 / t).
+// which does not change with the sample count (RMSE^2 falls as 1 / t). An estimate
+// without error (the furnace at --max-depth 0 sees only emission) has no efficiency
+// to compare: "exact".
 void strategy_rows(gi::Table& table, const std::string& scene, const std::vector<std::vector<Snapshot>>& runs) {
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const Snapshot& last = runs[k].back();
+    const double efficiency = 1 / (last.rmse * last.rmse * last.seconds);
     table.add_row({scene, gi::strategy_names()[k], last.spp, last.seconds, last.rmse,
-                   1 / (last.rmse * last.rmse * last.seconds)});
+                   std::isfinite(efficiency) ? gi::Cell(efficiency) : gi::Cell(last.rmse == 0 ? "exact" : "-")});
   }
 }
 
