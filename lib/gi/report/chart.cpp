@@ -39,7 +39,7 @@ std::string num(double v) {  // fixed formatting, independent of the locale
 std::string tick_label(double v, bool log) {
   char buffer[32];
   const int e = static_cast<int>(std::floor(std::log10(std::abs(v)) + 1e-9));
-  if (log && (e < -3 || e > 3)) std::snprintf(buffer, sizeof buffer, "%.3ge%d", v / std::pow(10.0, e), e);
+  if (log && (e < -3 || e > 4)) std::snprintf(buffer, sizeof buffer, "%.3ge%d", v / std::pow(10.0, e), e);
   else std::snprintf(buffer, sizeof buffer, "%g", std::abs(v) < 1e-12 ? 0.0 : v);
   return buffer;
 }

@@ -144,10 +144,25 @@ std::vector<double> bar_ticks(double a, double b, bool log) {
   return ticks;
 }
 
+// A colour bar's value, short: 0.25, 94, 1.27e-4 (no leading zeros in the exponent).
+std::string short_number(double v) {
+  if (v == 0 || (std::abs(v) >= 1e-3 && std::abs(v) < 1e5)) return number(v, 3);
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", v);
+  std::string text = buffer;
+  const std::size_t e = text.find('e');
+  if (e == std::string::npos) return text;
+  std::string mantissa = text.substr(0, e), exponent = text.substr(e + 1);
+  const bool negative = exponent[0] == '-';
+  exponent = exponent.substr(exponent[0] == '-' || exponent[0] == '+' ? 1 : 0);
+  while (exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
+  return mantissa + "e" + (negative ? "-" : "") + exponent;
+}
+
 std::string tick_text(double v, bool log) {
-  if (!log) return number(v, 3);
+  if (!log) return short_number(v);
   const int e = static_cast<int>(std::lround(std::log10(v)));
-  if (std::abs(v - std::pow(10.0, e)) > 1e-9 * v) return number(v, 3);
+  if (std::abs(v - std::pow(10.0, e)) > 1e-9 * v) return short_number(v);
   return "10<sup>" + std::to_string(e) + "</sup>";
 }
 
@@ -167,7 +182,7 @@ void colour_bar_html(std::ostream& os, const ColourScale& scale) {
   if (std::isfinite(lo) && std::isfinite(hi) && hi != lo)
     for (double t : bar_ticks(scale.lo, scale.hi, scale.log10)) {
       const double f = ((scale.log10 ? std::log10(t) : t) - lo) / (hi - lo);
-      if (f > 0.12 && f < 0.88) ticks.push_back({f, t});
+      if (f > 0.15 && f < 0.85) ticks.push_back({f, t});
     }
   std::sort(ticks.begin(), ticks.end());
   for (const auto& [f, v] : ticks) {
@@ -183,10 +198,13 @@ void colour_bar_html(std::ostream& os, const ColourScale& scale) {
 // it was made folded away.
 void figure_html(std::ostream& os, const Output& o, int width, int height, const std::string& details) {
   const int shown = shown_width(width);
-  // In a gallery, figures share a row: each may shrink to 240 px and grows to the
-  // size it is shown at.
-  os << "<figure" << (o.colour_scale ? " class=\"false-colour\"" : "") << " style=\"max-width: " << std::max(shown, 240)
-     << "px\"><img src=\"" << html_escape(url_path(o.file.generic_string())) << "\" alt=\"" << html_escape(o.caption)
+  // In a gallery, figures share a row: each may shrink to 200 px and grows to the
+  // size it is shown at. A strip of pictures set side by side (2.5 times as wide as
+  // high, or more) has a row of its own: its parts are what is compared.
+  std::string classes = o.colour_scale ? "false-colour" : "";
+  if (height > 0 && 2 * width >= 5 * height) classes += classes.empty() ? "strip" : " strip";
+  os << "<figure" << (classes.empty() ? "" : " class=\"" + classes + "\"") << " style=\"max-width: "
+     << std::max(shown, 240) << "px\"><img src=\"" << html_escape(url_path(o.file.generic_string())) << "\" alt=\"" << html_escape(o.caption)
      << "\"";
   if (width > 0) os << " width=\"" << shown << "\" height=\"" << (shown / width) * height << "\"";
   os << ">\n";
