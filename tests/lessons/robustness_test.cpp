@@ -105,7 +105,9 @@ TEST(LessonFaults, AKilledRunLeavesNoHalfFileAndTheNextRunCleansUp) {
     const std::string record = fs::exists(folder + "/outputs.json") ? bytes(folder + "/outputs.json") : "";
     const bool complete = record.find("\"status\": \"complete\"") != std::string::npos;
     EXPECT_TRUE(record.empty() || complete || record.find("\"status\": \"running\"") != std::string::npos) << record;
-    if (!complete) EXPECT_FALSE(fs::exists(folder + "/index.html")) << "a killed run left a page";
+    if (!complete) {
+      EXPECT_FALSE(fs::exists(folder + "/index.html")) << "a killed run left a page";
+    }
     check_every_image(folder);
   }
   EXPECT_GE(killed, 5) << "too few runs were killed midway for the test to mean anything";

@@ -65,7 +65,9 @@ TEST(LessonGuide, EveryLessonDocOpensWithWhatItShows) {
     const gi::LessonGuide g = gi::read_guide(doc.contents, doc.name);
     EXPECT_EQ(g.lesson + ".md", doc.name);
     EXPECT_TRUE(std::filesystem::exists(gi::source_file(g.doc)));
-    if (!g.lab.empty()) EXPECT_TRUE(std::filesystem::exists(gi::source_file(g.lab))) << g.lab;
+    if (!g.lab.empty()) {
+      EXPECT_TRUE(std::filesystem::exists(gi::source_file(g.lab))) << g.lab;
+    }
     EXPECT_GE(g.shows.size(), 80u) << "a sentence or two of what the lesson shows";
     EXPECT_LE(gi::first_sentence(g.shows).size(), 200u) << "the index's one line: " << gi::first_sentence(g.shows);
   }
