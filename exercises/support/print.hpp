@@ -15,6 +15,7 @@
 #include "gi/accel/world.hpp"
 #include "gi/core/math.hpp"
 #include "gi/core/ray.hpp"
+#include "gi/core/samplers/sample_stream.hpp"
 #include "gi/geometry/aabb.hpp"
 #include "gi/radiosity/form_factors/hemicube.hpp"
 #include "gi/radiosity/system/solver.hpp"
@@ -66,6 +67,7 @@ inline void PrintTo(Split s, std::ostream* os) { print::name(s, {"Sah", "Median"
 inline void PrintTo(Acceleration a, std::ostream* os) { print::name(a, {"BruteForce", "BoundingBoxes", "Bvh"}, os); }
 inline void PrintTo(Sampler s, std::ostream* os) { print::name(s, {"centre", "grid", "random", "jittered", "adaptive"}, os); }
 inline void PrintTo(LightSampling s, std::ostream* os) { print::name(s, {"centre", "random", "jittered"}, os); }
+inline void PrintTo(SamplerKind k, std::ostream* os) { *os << sampler_name(k); }
 
 inline void PrintTo(const HemicubeCell& c, std::ostream* os) {
   *os << "{face ";

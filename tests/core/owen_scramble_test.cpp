@@ -30,6 +30,8 @@ struct Named {
   Scramble scramble;
 };
 
+void PrintTo(const Named& scramble, std::ostream* os) { *os << scramble.name; }
+
 class OwenScramble : public ::testing::TestWithParam<Named> {};
 
 INSTANTIATE_TEST_SUITE_P(BothWays, OwenScramble,

@@ -146,8 +146,8 @@ TEST_P(EverySampler, EachNumberAloneIsUniform) {
 }
 
 TEST_P(EverySampler, DecisionsOfOneSampleAreIndependent) {
-  // Within a pixel, N = 64 samples of two decisions (dimensions 2 and 3, and the two
-  // coordinates of different 2D decisions): if they walked their strata in step, each
+  // Within a pixel, N = 64 samples of two decisions (the 1D dimensions 2 and 3, and the
+  // x coordinates of the 2D dimensions 4 and 5): if they walked their strata in step, each
   // pixel's pairs would be strongly correlated. Their correlation r over the 64 samples,
   // squared and averaged over 2000 pixels, must be near that of independent numbers,
   // 1 / (N - 1): measured 0.99 / 63 for independent and stratified samples and 1.6 / 63
@@ -164,7 +164,7 @@ TEST_P(EverySampler, DecisionsOfOneSampleAreIndependent) {
       a.push_back(s.get_1d(2));
       b.push_back(s.get_1d(3));
       c.push_back(s.get_2d(4).x);
-      e.push_back(s.get_2d(5).y);
+      e.push_back(s.get_2d(5).x);
     }
     const double r_ab = correlation(a, b), r_ce = correlation(c, e);
     sum_r2 += r_ab * r_ab + r_ce * r_ce;
