@@ -1,5 +1,6 @@
 #include "gi/core/samplers/owen_scramble.hpp"
 
+#include "gi/core/not_implemented.hpp"
 #include "gi/core/samplers/seeds.hpp"
 
 namespace gi {
