@@ -137,11 +137,9 @@ int main(int argc, char** argv) {
     Times ours_one, tachyon_one, ours_many, tachyon_many;
     gi::Progress progress("rendering", 4LL * runs);
     for (int run = 0; run < runs; ++run) {
-      settings.threads = 1;
-      ours_one.ms.push_back(1e3 * gi::render(world, settings).seconds);
+      ours_one.ms.push_back(1e3 * gi::render(world, settings, 1, 1).seconds);
       tachyon_one.ms.push_back(tachyon_ms(tachyon, 1));
-      settings.threads = threads;
-      ours_many.ms.push_back(1e3 * gi::render(world, settings).seconds);
+      ours_many.ms.push_back(1e3 * gi::render(world, settings, 1, threads).seconds);
       tachyon_many.ms.push_back(tachyon_ms(tachyon, threads));
       progress.advance(4);
     }

@@ -57,14 +57,12 @@ int main(int argc, char** argv) {
     if (ff == "monte-carlo") recipe.form_factors.method = gi::FormFactorMethod::MonteCarlo;
     if (solver == "hierarchical") recipe.solver = gi::RecipeSolver::Hierarchical;
     recipe.exact_direct = direct != "form-factors";
-    recipe.threads = recipe.direct.threads = lesson.threads();
-    const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, recipe);
+    const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, recipe, lesson.threads());
     if (r.status != gi::SolveStatus::Converged) throw std::runtime_error("the solver did not converge");
     gi::DisplaySettings display;
     display.width = display.height = size;
-    display.threads = lesson.threads();
-    display.seed = lesson.seed();
-    const gi::Image picture = gi::recipe_picture(r, scene.camera, display, direct == "per-pixel", recipe.direct);
+    const gi::Image picture = gi::recipe_picture(r, scene.camera, display, direct == "per-pixel", recipe.direct,
+                                                lesson.seed(), lesson.threads());
     const double seconds = timer.seconds();
 
     const gi::PictureError error = gi::picture_error(picture, truth->mean, mask);

@@ -16,7 +16,7 @@
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/display/direct_display.hpp"
+#include "gi/radiosity/recipe_picture.hpp"
 #include "gi/radiosity/display/display.hpp"
 #include "gi/radiosity/system/float_sweep.hpp"
 #include "gi/radiosity/system/progressive.hpp"
@@ -260,8 +260,6 @@ void against_truth(Study study, int threads, std::uint64_t seed, gi::Lesson& les
   const gi::PictureError noise = gi::reference_noise(truth->standard_error, truth->mean, mask);
   gi::DisplaySettings display;
   display.width = display.height = size;
-  display.threads = threads;
-  display.seed = seed;
   const gi::View view{scene.camera, size, size, gi::describe_pixel_samples(display)};
   gi::Table table("The Cornell box against the path-traced truth (" + std::to_string(truth->spp) + " spp, whose own " +
                       "noise is " + gi::format_number(100 * noise.relative_rms, 2, gi::Format::Fixed) + "% / " +
@@ -276,22 +274,14 @@ void against_truth(Study study, int threads, std::uint64_t seed, gi::Lesson& les
   std::vector<std::string> warnings;
   for (Method m : methods(study)) {
     m.recipe.elements = m.elements;
-    m.recipe.threads = m.recipe.direct.threads = threads;
-    const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, m.recipe);
-    const gi::FormFactorScene elements(gi::element_shapes(r.mesh));
+    const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, m.recipe, threads);
     double seconds = r.seconds(), direct_seconds = r.direct_seconds;
-    gi::Image picture;
-    if (m.direct_per_pixel) {
-      // Part of the answer, not just of showing it: the direct light's time counts.
-      const gi::Timer timer;
-      picture = gi::render_direct_light(elements, r.mesh, scene.camera, display, m.recipe.direct);
-      seconds += timer.seconds(), direct_seconds += timer.seconds();
-      const std::vector<gi::Color> indirect = gi::indirect_part(r.mesh, r.B, r.direct);
-      const gi::Image rest = gi::render_radiosity_picture(elements, r.mesh, indirect, scene.camera, display).radiance;
-      for (std::size_t i = 0; i < picture.pixels.size(); ++i) picture.pixels[i] += rest.pixels[i];
-    } else {
-      picture = gi::render_radiosity_picture(elements, r.mesh, r.B, scene.camera, display).radiance;
-    }
+    // Per pixel, the direct light is part of the answer, not just of showing it: the
+    // picture's time counts.
+    const gi::Timer timer;
+    const gi::Image picture = gi::recipe_picture(r, scene.camera, display, m.direct_per_pixel, m.recipe.direct, seed,
+                                                 threads);
+    if (m.direct_per_pixel) seconds += timer.seconds(), direct_seconds += timer.seconds();
     const gi::PictureError error = gi::picture_error(picture, truth->mean, mask);
     const gi::FormFactorMethod ff = r.form_factors.method;
     const gi::Cell setting = ff == gi::FormFactorMethod::Hemicube     ? gi::Cell(r.form_factors.hemicube_resolution)

@@ -104,7 +104,7 @@ gi::PathReference own_reference(const gi::PathScene& scene, const Settings& s, g
     gi::Progress progress("reference", s.reference_spp);
     const gi::Timer timer;
     for (int done = 0; done < s.reference_spp; done += 16) {
-      gi::render_pass(film, scene, s.path, std::min(16, s.reference_spp - done), s.threads);
+      gi::path_trace(film, scene, s.path, std::min(16, s.reference_spp - done), s.threads);
       progress.advance(std::min(16, s.reference_spp - done));
     }
     progress.finish();
@@ -141,7 +141,7 @@ std::vector<Snapshot> converge(const gi::PathScene& scene, const Settings& s, gi
   double seconds = 0;
   for (int spp = 1; spp <= s.max_spp; spp *= 2) {
     const gi::Timer timer;
-    gi::render_pass(film, scene, path, spp - static_cast<int>(film.samples), s.threads);
+    gi::path_trace(film, scene, path, spp - static_cast<int>(film.samples), s.threads);
     seconds += timer.seconds();
     progress.advance(spp / 2 + (spp == 1));
     const gi::Image picture = gi::film_mean(film);

@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
       const gi::Timer timer;
       for (int done = 0; done < batch_spp; done += 16) {
         const int n = std::min(16, batch_spp - done);
-        gi::render_pass(film, scene, settings, n, lesson.threads());
+        gi::path_trace(film, scene, settings, n, lesson.threads());
         progress.advance(n);
       }
       progress.finish();

@@ -100,19 +100,16 @@ std::vector<Run> solve_radiosity(const gi::RadiosityScene& scene, const Settings
                                  const Scoring& scoring) {
   gi::DisplaySettings display;
   display.width = display.height = s.size;
-  display.threads = s.threads;
-  display.seed = s.seed;
   std::vector<Run> runs;
   for (Method m : radiosity_methods(s.full))
     for (int elements : m.elements) {
       m.recipe.elements = elements;
-      m.recipe.threads = m.recipe.direct.threads = s.threads;
       const gi::Timer timer;
-      const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, m.recipe);
+      const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, m.recipe, s.threads);
       if (r.status != gi::SolveStatus::Converged)
         throw std::runtime_error(m.family + " at " + std::to_string(elements) + " elements did not converge");
       Run run{m.family, m.family, static_cast<int>(r.mesh.elements.size()), 0, 0, 0, {}};
-      run.picture = gi::recipe_picture(r, scene.camera, display, m.direct_per_pixel, m.recipe.direct);
+      run.picture = gi::recipe_picture(r, scene.camera, display, m.direct_per_pixel, m.recipe.direct, s.seed, s.threads);
       run.seconds = timer.seconds();
       score(run, truth, scoring);
       runs.push_back(std::move(run));
@@ -129,7 +126,7 @@ std::vector<Run> path_trace(const gi::PathScene& scene, const Settings& s, const
   double seconds = 0;
   for (int spp = 1; spp <= s.max_spp; spp *= 2) {
     const gi::Timer timer;
-    gi::render_pass(film, scene, {}, spp - static_cast<int>(film.samples), s.threads);
+    gi::path_trace(film, scene, {}, spp - static_cast<int>(film.samples), s.threads);
     seconds += timer.seconds();
     progress.advance(spp / 2 + (spp == 1));
     Run run{"path tracing (MIS)", "path tracing (MIS), " + std::to_string(spp) + " spp", 0, seconds, 0, 0, {}};
@@ -252,7 +249,7 @@ void specular(const Settings& s, gi::Lesson& lesson) {
   const gi::Timer timer;
   for (int spp = s.caustic_spp / 16; spp <= s.caustic_spp; spp *= 4) {
     const int more = spp - static_cast<int>(film.samples);
-    gi::render_pass(film, scene, {}, more, s.threads);
+    gi::path_trace(film, scene, {}, more, s.threads);
     progress.advance(more);
     const gi::Image mean = gi::film_mean(film), variance = gi::film_variance(film);
     // Mean relative standard error over a square of pixels (fractions of the picture).

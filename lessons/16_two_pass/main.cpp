@@ -63,11 +63,12 @@ struct Picture {
 Picture radiosity_alone(const Settings& s, const gi::TwoPassScene& scene, const gi::RadiosityPass& pass) {
   gi::DisplaySettings display;
   display.width = s.width, display.height = s.height, display.samples = s.eye.samples;
-  display.threads = s.threads, display.seed = s.seed;
   const gi::Timer timer;
   const gi::FormFactorScene elements(gi::element_shapes(pass.handoff.mesh));
   gi::Image radiosity =
-      gi::render_radiosity_picture(elements, pass.handoff.mesh, pass.handoff.B, scene.camera, display).radiance;
+      gi::render_radiosity_picture(elements, pass.handoff.mesh, pass.handoff.B, scene.camera, display, s.seed,
+                                   s.threads)
+          .radiance;
   return {"radiosity alone", std::move(radiosity), pass.seconds(), timer.seconds()};
 }
 
@@ -80,7 +81,7 @@ std::vector<Picture> render_all(const Settings& s, const gi::TwoPassScene& scene
     gi::TwoPassSettings eye = s.eye;
     eye.indirect = indirect;
     const gi::Timer timer;
-    gi::Image picture = gi::render_two_pass(scene, pass.handoff, eye);
+    gi::Image picture = gi::render_two_pass(scene, pass.handoff, eye, s.seed, s.threads);
     return Picture{"", std::move(picture), pass1, timer.seconds()};
   };
   pictures.push_back(eye_pass(gi::IndirectLight::Ambient, 0));
@@ -135,7 +136,7 @@ void equal_time(const Settings& s, const gi::TwoPassScene& scene, const Picture&
   table.add_row({gather.method, elements, gather.pass1_seconds + gather.pass2_seconds, 100 * g.relative_rms});
   gi::RadiosityPassSettings finer = s.radiosity;
   finer.elements *= 2;
-  const gi::RadiosityPass pass = gi::radiosity_pass(scene, finer);
+  const gi::RadiosityPass pass = gi::radiosity_pass(scene, finer, s.threads);
   const Picture alone = radiosity_alone(s, scene, pass);
   table.add_row({alone.method, static_cast<int>(pass.handoff.mesh.elements.size()),
                  alone.pass1_seconds + alone.pass2_seconds,
@@ -172,7 +173,7 @@ void crops(const Settings& s, const std::vector<Picture>& pictures, const gi::Im
 // Everything above for one scene.
 void two_pass_lesson(const Settings& s, gi::Lesson& lesson) {
   const gi::TwoPassScene scene = gi::make_two_pass_scene(s.scene);
-  const gi::RadiosityPass pass = gi::radiosity_pass(scene, s.radiosity);
+  const gi::RadiosityPass pass = gi::radiosity_pass(scene, s.radiosity, s.threads);
   lesson.say(s.scene + ", pass 1: " + std::to_string(pass.handoff.mesh.elements.size()) + " elements, hemicube " +
              std::to_string(pass.hemicube_resolution) + ", " + std::to_string(pass.shots) + " shots, " +
              gi::status_name(pass.status));
@@ -216,8 +217,8 @@ int main(int argc, char** argv) {
       .add("--light-cells", s.eye.light_cells, "n x n shadow rays per light at each diffuse hit", 1, 64)
       .add("--gather", s.eye.gather_strata, "n x n final-gather rays at each diffuse hit", 1, 64);
   return lesson.run(argc, argv, [&] {
-    s.threads = s.radiosity.threads = s.eye.threads = lesson.threads();
-    s.seed = s.radiosity.seed = s.eye.seed = lesson.seed();
+    s.threads = lesson.threads();
+    s.seed = s.radiosity.seed = lesson.seed();
     s.eye.width = s.width, s.eye.height = s.height;
     s.radiosity.form_factors.hemicube_resolution = 0;  // from the mesh
     const std::vector<std::string> names =

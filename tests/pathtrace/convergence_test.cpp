@@ -60,11 +60,11 @@ TEST(MonteCarloErrorLaw, HoldsForThePathTracerOnTheCornellBox) {
     gi::Film film = gi::make_film(32, 32, 500 + seed);
     std::vector<gi::ErrorAtSamples> points;
     for (int spp = 1; spp <= 4; spp *= 2) {
-      gi::render_pass(film, scene, {}, spp - static_cast<int>(film.samples), 0);
+      gi::path_trace(film, scene, {}, spp - static_cast<int>(film.samples), 0);
       points.push_back({double(spp), gi::picture_error(gi::film_mean(film), truth.mean, mask).relative_rms});
     }
     const double v = gi::monte_carlo_variance(points, r);
-    gi::render_pass(film, scene, {}, 12, 0);
+    gi::path_trace(film, scene, {}, 12, 0);
     const double e16 = gi::picture_error(gi::film_mean(film), truth.mean, mask).relative_rms;
     differences.push_back(v - 16 * (e16 * e16 - r * r));
     fitted.push_back(v);

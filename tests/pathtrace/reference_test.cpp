@@ -25,7 +25,7 @@ fs::path scratch(const std::string& name) {
 gi::PathReference small_reference(const std::string& fingerprint, std::uint64_t seed = 1) {
   const gi::PathScene scene = gi::make_path_scene(gi::furnace_scene(0.5, 1.0));
   gi::Film film = gi::make_film(4, 2, seed);
-  gi::render_pass(film, scene, {}, 8, 1);
+  gi::path_trace(film, scene, {}, 8, 1);
   return gi::reference_from_film(film, "furnace", fingerprint, seed, {}, 0.5);
 }
 
@@ -148,7 +148,7 @@ TEST(Reference, TheCornellBoxReferenceInTheTreeIsTheScenesPictureAndConverged) {
   gi::Film film = gi::make_film(64, 64, 777);
   gi::PathSettings lights;
   lights.strategy = gi::Strategy::Lights;
-  gi::render_pass(film, scene, lights, 128, 0);
+  gi::path_trace(film, scene, lights, 128, 0);
   const gi::PathReference test = gi::downsample(gi::reference_from_film(film, "cornell", "", 777, lights, 0), 4);
   const gi::PathReference truth = gi::downsample(*reference, 16);
   std::vector<double> z2, ones;

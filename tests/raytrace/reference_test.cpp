@@ -23,6 +23,8 @@ namespace fs = std::filesystem;
 struct Cache {
   gi::World world = gi::make_world(gi::make_scene("whitted"));
   gi::RenderSettings settings;
+  std::uint64_t seed = 1;
+  int threads = 0;
   fs::path folder;
   explicit Cache(const std::string& name) : folder(fs::path(testing::TempDir()) / "gi_reference_test" / name) {
     fs::remove_all(folder);
@@ -31,7 +33,7 @@ struct Cache {
     settings.trace.max_depth = 2;
   }
   gi::CachedImage get(const std::string& scene_key = "whitted") const {
-    return gi::cached_reference(world, settings, scene_key, folder);
+    return gi::cached_reference(world, settings, seed, threads, scene_key, folder);
   }
   fs::path key_file(const gi::CachedImage& c) const { return fs::path(c.file).replace_extension(".key"); }
 };
@@ -50,7 +52,7 @@ TEST(ReferenceCache, RendersOnceThenReadsBackTheSameImage) {
   EXPECT_TRUE(second.from_cache) << second.reason;
   EXPECT_EQ(second.file, first.file);
   EXPECT_EQ(second.image.pixels, first.image.pixels);
-  EXPECT_EQ(second.image.pixels, gi::render(cache.world, cache.settings).image.pixels);
+  EXPECT_EQ(second.image.pixels, gi::render(cache.world, cache.settings, cache.seed, 0).image.pixels);
 }
 
 TEST(ReferenceCache, EverySettingCountsExactly) {
@@ -62,12 +64,12 @@ TEST(ReferenceCache, EverySettingCountsExactly) {
   cache.settings.trace.min_contribution += step;  // the smallest change a double can make
   EXPECT_FALSE(cache.get("soft_shadow_scene, light size 0.05").from_cache);
   cache.settings.trace.min_contribution = 0;
-  cache.settings.seed = 2;
+  cache.seed = 2;
   EXPECT_FALSE(cache.get("soft_shadow_scene, light size 0.05").from_cache);
-  cache.settings.seed = 1;
-  cache.settings.threads = 3;  // the image does not depend on it
+  cache.seed = 1;
+  cache.threads = 3;  // the image does not depend on it
   EXPECT_TRUE(cache.get("soft_shadow_scene, light size 0.05").from_cache);
-  EXPECT_NE(gi::reference_key(cache.world, cache.settings, "a").find(gi::render_code_fingerprint()), std::string::npos);
+  EXPECT_NE(gi::reference_key(cache.world, cache.settings, cache.seed, "a").find(gi::render_code_fingerprint()), std::string::npos);
   EXPECT_EQ(std::string(gi::render_code_fingerprint()).size(), 64u) << "a SHA-256 in hexadecimal";
 }
 
@@ -128,7 +130,7 @@ TEST(ReferenceCache, AValidPfmWithAForgedKeyOfAnotherSizeIsRefused) {
   gi::Image tiny(2, 2, gi::Pixel(7.0f));
   gi::write_pfm(tiny, good.file);
   const std::string bytes = gi_test::file_text(good.file);
-  overwrite(cache.key_file(good), gi::reference_key(cache.world, cache.settings, "whitted") + "pfm_bytes " +
+  overwrite(cache.key_file(good), gi::reference_key(cache.world, cache.settings, cache.seed, "whitted") + "pfm_bytes " +
                                       std::to_string(bytes.size()) + "\npfm_fnv1a " + gi::hex(gi::fnv1a(bytes)) + "\n");
   const gi::CachedImage again = cache.get();
   EXPECT_FALSE(again.from_cache);

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "gi/image/image.hpp"
-#include "gi/pathtrace/film.hpp"
+#include "gi/pathtrace/path_trace.hpp"
 
 namespace gi {
 

@@ -72,7 +72,7 @@ std::string try_read(const fs::path& pfm, const fs::path& key_file, const std::s
 
 // Everything but the code: what names the file, so that a change of code replaces
 // the file instead of adding one.
-std::string settings_text(const World& world, const RenderSettings& s, const std::string& scene_key) {
+std::string settings_text(const World& world, const RenderSettings& s, std::uint64_t seed, const std::string& scene_key) {
   std::ostringstream key;
   key << "scene " << scene_key
       << "\nacceleration " << name(world.acceleration) << "\nwidth " << s.width << "\nheight " << s.height
@@ -80,22 +80,23 @@ std::string settings_text(const World& world, const RenderSettings& s, const std
       << "\nepsilon " << exact(s.trace.epsilon) << "\nshadow_sampling "
       << light_sampling_name(s.trace.soft_shadows.sampling) << "\nshadow_n " << s.trace.soft_shadows.n
       << "\nsampler " << sampler_name(s.sampling.sampler) << "\nsampler_n " << s.sampling.n << "\nthreshold "
-      << exact(s.sampling.threshold) << "\nmax_subdivisions " << s.sampling.max_subdivisions << "\nseed " << s.seed
+      << exact(s.sampling.threshold) << "\nmax_subdivisions " << s.sampling.max_subdivisions << "\nseed " << seed
       << '\n';
   return key.str();
 }
 
 }  // namespace
 
-std::string reference_key(const World& world, const RenderSettings& settings, const std::string& scene_key) {
+std::string reference_key(const World& world, const RenderSettings& settings, std::uint64_t seed,
+                          const std::string& scene_key) {
   return std::string(format_line) + "\ncode " + render_code_fingerprint() + "\n" +
-         settings_text(world, settings, scene_key);
+         settings_text(world, settings, seed, scene_key);
 }
 
-CachedImage cached_reference(const World& world, const RenderSettings& settings, const std::string& scene_key,
-                             const fs::path& folder) {
-  const std::string key = reference_key(world, settings, scene_key);
-  const std::string stem = "reference_" + hex(fnv1a(settings_text(world, settings, scene_key)));
+CachedImage cached_reference(const World& world, const RenderSettings& settings, std::uint64_t seed, int threads,
+                             const std::string& scene_key, const fs::path& folder) {
+  const std::string key = reference_key(world, settings, seed, scene_key);
+  const std::string stem = "reference_" + hex(fnv1a(settings_text(world, settings, seed, scene_key)));
   CachedImage result;
   result.file = folder / (stem + ".pfm");
   const fs::path key_file = folder / (stem + ".key");
@@ -104,7 +105,7 @@ CachedImage cached_reference(const World& world, const RenderSettings& settings,
     result.from_cache = true;
     return result;
   }
-  result.image = render(world, settings).image;
+  result.image = render(world, settings, seed, threads).image;
   write_pfm(result.image, result.file);
   const std::string sum = checksum(result.file);
   const std::uintmax_t size = fs::file_size(result.file);

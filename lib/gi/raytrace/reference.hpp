@@ -27,12 +27,13 @@ struct CachedImage {
   bool from_cache = false;     // read back, rather than rendered now
   std::string reason;          // why it was rendered: "no cached image", "... made by other library code" ...
 };
-CachedImage cached_reference(const World& world, const RenderSettings& settings, const std::string& scene_key,
-                             const std::filesystem::path& folder);
+CachedImage cached_reference(const World& world, const RenderSettings& settings, std::uint64_t seed, int threads,
+                             const std::string& scene_key, const std::filesystem::path& folder);
 
 // The key: one line per input, doubles to 17 significant digits (they read back
 // exactly), and the fingerprint of the code.
-std::string reference_key(const World& world, const RenderSettings& settings, const std::string& scene_key);
+std::string reference_key(const World& world, const RenderSettings& settings, std::uint64_t seed,
+                          const std::string& scene_key);
 
 // SHA-256 of the source files of core, image, geometry, scene, accel and raytrace,
 // computed when the library is built (cmake/CodeFingerprint.cmake): a student's fix
