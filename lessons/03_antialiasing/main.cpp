@@ -44,13 +44,13 @@ gi::Image reference_image(const gi::World& world, gi::RenderSettings settings, i
   settings.sampling = {gi::Sampler::Jittered, n};
   const std::uint64_t seed = lesson.seed() + 1000;  // independent of the jittered runs being measured
   const std::string scene_key = "scene " + world.scene.name + ", fingerprint " + gi::fingerprint(world.scene);
-  gi::CachedImage cached = gi::cached_reference(world, settings, seed, lesson.threads(), scene_key, lesson.out());
-  if (cached.from_cache) lesson.say("reference: read from the cache " + cached.file.string() + "\n");
-  else if (cached.reason != "no cached image") lesson.say("reference: rendered again, " + cached.reason + "\n");
-  lesson.record(cached.file, gi::OutputKind::Cache, "the cached reference image, linear");
-  lesson.picture(cached.image, "reference", "the reference: jittered " + std::to_string(n) + "x" + std::to_string(n),
-                 view(world, settings));
-  return std::move(cached.image);
+  gi::CachedTruth cached = gi::cached_reference(world, settings, seed, lesson.threads(), scene_key, lesson.out());
+  if (cached.from_cache) lesson.say("reference: read from the cache " + cached.stem.string() + ".*\n");
+  else if (cached.reason != "none kept") lesson.say("reference: rendered again, " + cached.reason + "\n");
+  for (const auto& file : gi::truth_files(cached.stem)) lesson.record(file, gi::OutputKind::Cache, "the cached reference");
+  lesson.picture(cached.truth.mean, "reference",
+                 "the reference: jittered " + std::to_string(n) + "x" + std::to_string(n), view(world, settings));
+  return std::move(cached.truth.mean);
 }
 
 std::string slug(std::string label) {

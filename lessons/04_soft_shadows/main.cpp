@@ -111,11 +111,12 @@ int main(int argc, char** argv) {
     reference_settings.trace.soft_shadows = {gi::LightSampling::Jittered, reference_n};
     const std::uint64_t reference_seed = lesson.seed() + 1000;  // independent of the runs being measured
     const std::string scene_key = "scene " + scene.name + ", fingerprint " + gi::fingerprint(scene);
-    const gi::CachedImage cached = gi::cached_reference(world, reference_settings, reference_seed, lesson.threads(), scene_key, lesson.out());
-    if (cached.from_cache) lesson.say("reference: read from the cache " + cached.file.string() + "\n");
-    else if (cached.reason != "no cached image") lesson.say("reference: rendered again, " + cached.reason + "\n");
-    lesson.record(cached.file, gi::OutputKind::Cache, "the cached reference image, linear");
-    const gi::Image& reference = cached.image;
+    const gi::CachedTruth cached =
+        gi::cached_reference(world, reference_settings, reference_seed, lesson.threads(), scene_key, lesson.out());
+    if (cached.from_cache) lesson.say("reference: read from the cache " + cached.stem.string() + ".*\n");
+    else if (cached.reason != "none kept") lesson.say("reference: rendered again, " + cached.reason + "\n");
+    for (const auto& file : gi::truth_files(cached.stem)) lesson.record(file, gi::OutputKind::Cache, "the cached reference");
+    const gi::Image& reference = cached.truth.mean;
     lesson.picture(reference, "reference", "the reference: jittered " + std::to_string(reference_n) + "x" +
                    std::to_string(reference_n) + " shadow rays", view(world, reference_settings));
 

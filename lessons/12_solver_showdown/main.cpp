@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,12 +16,12 @@
 #include "gi/core/timer.hpp"
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
+#include "gi/pathtrace/path_truth.hpp"
 #include "gi/radiosity/recipe_picture.hpp"
 #include "gi/radiosity/display/display.hpp"
 #include "gi/radiosity/system/float_sweep.hpp"
 #include "gi/radiosity/system/progressive.hpp"
-#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/radiosity/display/surface_mask.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/system/solvers.hpp"
@@ -245,17 +246,9 @@ std::vector<Method> methods(Study study) {
   return list;
 }
 
-void against_truth(Study study, int threads, std::uint64_t seed, gi::Lesson& lesson) {
+void against_truth(Study study, const gi::Truth* truth, int threads, std::uint64_t seed, gi::Lesson& lesson) {
   const gi::RadiosityScene scene = gi::cornell_box();
   const int size = 256;
-  const gi::PathScene path_scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
-  std::string why;
-  const auto truth = gi::load_reference(std::string(GI_SOURCE_DIR) + "/lessons/references/cornell_256x256",
-                                        gi::reference_fingerprint(path_scene, {}, size, size), &why);
-  if (!truth) {
-    lesson.say("no path-traced picture of the box to compare with (" + why + "); make it with 14_make_reference");
-    return;
-  }
   const gi::BlockMask mask = gi::interior_blocks(scene.surfaces, scene.camera, size, size, 8);
   const gi::PictureError noise = gi::reference_noise(truth->standard_error, truth->mean, mask);
   gi::DisplaySettings display;
@@ -351,10 +344,13 @@ int main(int argc, char** argv) {
       .add_flag("--quick-mesh-study", quick_truth, "compare only the meshes of up to 500 elements with the truth")
       .add_flag("--full", full_truth, "compare every mesh of docs/12's table with the truth, up to 9 000 elements "
                                       "(under a minute; the default shows seven of its rows)");
+  std::optional<gi::Truth> truth;
   lesson.add_check([&] {
     if (int(skip_mesh) + int(quick_truth) + int(full_truth) > 1)
       throw gi::OptionError("--skip-mesh-study, --quick-mesh-study and --full choose how much to compare with the "
                             "truth: give at most one");
+    // Before any work: a damaged or stale truth stops the lesson in one line.
+    if (!skip_mesh) truth = gi::stored_truth(std::string(GI_SOURCE_DIR) + "/lessons/references", "cornell", 256, 256);
   });
   return lesson.run(argc, argv, [&] {
     const Box open = cornell(elements, false, lesson.threads()), closed = cornell(elements, true, lesson.threads());
@@ -365,7 +361,8 @@ int main(int argc, char** argv) {
     precision(closed, lesson);
     if (!skip_mesh) {
       std::cout << '\n';
-      against_truth(full_truth ? Study::Full : quick_truth ? Study::Small : Study::Lesson, lesson.threads(), lesson.seed(), lesson);
+      against_truth(full_truth ? Study::Full : quick_truth ? Study::Small : Study::Lesson, &*truth, lesson.threads(),
+                    lesson.seed(), lesson);
     }
     std::cout << '\n';
     bandwidth(bandwidth_n, lesson);

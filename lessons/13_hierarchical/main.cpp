@@ -13,11 +13,11 @@
 #include "gi/image/diff.hpp"
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
+#include "gi/pathtrace/path_truth.hpp"
 #include "gi/radiosity/display/direct_display.hpp"
 #include "gi/radiosity/hierarchical/hierarchical_run.hpp"
 #include "gi/radiosity/hierarchical/link_gather.hpp"
-#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/radiosity/display/surface_mask.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/display/vertex_colours.hpp"
 #include "gi/viewer/hierarchical.hpp"
@@ -306,17 +306,15 @@ int main(int argc, char** argv) {
       .add("--uniform-elements", s.uniform_elements, "the finest uniform mesh compared (and a quarter of it)", 100, 20000)
       .add("--exposure", s.exposure, "multiplies the radiance before display", 0.01, 100.0)
       .add_flag("--skip-studies", skip_studies, "only the thresholds (no uniform meshes, failures or relighting)");
+  const int size = 256;  // the stored truth's
+  std::optional<gi::Truth> truth;
+  lesson.add_check([&] {  // before any work: a damaged or stale truth stops the lesson in one line
+    truth = gi::stored_truth(std::string(GI_SOURCE_DIR) + "/lessons/references", "cornell", size, size);
+  });
   return lesson.run(argc, argv, [&] {
     s.threads = lesson.threads();
     s.seed = s.settings.refinement.seed = lesson.seed();
-    const int size = 256;  // the stored truth's
     s.display.width = s.display.height = size;
-    std::string why;
-    const auto truth = gi::load_reference(
-        std::string(GI_SOURCE_DIR) + "/lessons/references/cornell_256x256",
-        gi::reference_fingerprint(gi::make_path_scene(gi::make_path_scene_by_name("cornell")), {}, size, size), &why);
-    if (!truth) throw std::runtime_error("no path-traced picture of the box to compare with (" + why +
-                                         "); make it with 14_make_reference");
     s.truth = truth->mean;
     s.mask = gi::interior_blocks(s.scene.surfaces, s.scene.camera, size, size, 8);
     const gi::PictureError noise = gi::reference_noise(truth->standard_error, truth->mean, s.mask);

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/pathtrace/path_truth.hpp"
+#include "gi/radiosity/display/surface_mask.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 namespace {
@@ -47,11 +47,8 @@ TEST(MonteCarloErrorLaw, HoldsForThePathTracerOnTheCornellBox) {
   // would put them 50% and more apart.
   const gi::RadiosityScene box = gi::cornell_box();
   const gi::PathScene scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
-  std::string why;
-  const auto stored = gi::load_reference(std::filesystem::path(GI_SOURCE_DIR) / "lessons/references/cornell_256x256",
-                                         gi::reference_fingerprint(scene, {}, 256, 256), &why);
-  ASSERT_TRUE(stored) << why;
-  const gi::PathReference truth = gi::downsample(*stored, 8);
+  const gi::Truth truth =
+      gi::stored_truth(std::filesystem::path(GI_SOURCE_DIR) / "lessons/references", "cornell", 32, 32);
   const gi::BlockMask mask = gi::interior_blocks(box.surfaces, box.camera, 32, 32, 1);
   const double r = gi::reference_noise(truth.standard_error, truth.mean, mask).relative_rms;
   const int seeds = 12;

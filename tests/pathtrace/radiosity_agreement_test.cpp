@@ -7,12 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <optional>
 
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
+#include "gi/pathtrace/path_truth.hpp"
 #include "gi/radiosity/display/direct_display.hpp"
-#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/radiosity/display/surface_mask.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/recipe_picture.hpp"
@@ -21,12 +22,8 @@ namespace {
 
 TEST(RadiosityAgainstPathTracing, TheCornellBoxAgreesWithinTheMeshsError) {
   const gi::RadiosityScene box = gi::cornell_box();
-  const gi::PathScene path_scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
-  std::string why;
-  const auto stored = gi::load_reference(std::filesystem::path(GI_SOURCE_DIR) / "lessons/references/cornell_256x256",
-                                         gi::reference_fingerprint(path_scene, {}, 256, 256), &why);
-  ASSERT_TRUE(stored) << why;
-  const gi::PathReference truth = gi::downsample(*stored, 2);
+  const gi::Truth truth =
+      gi::stored_truth(std::filesystem::path(GI_SOURCE_DIR) / "lessons/references", "cornell", 128, 128);
   const gi::BlockMask mask = gi::interior_blocks(box.surfaces, box.camera, 128, 128, 4);
 
   gi::Recipe recipe;
@@ -55,11 +52,8 @@ TEST(RadiosityAgainstPathTracing, HierarchicalFinalGatherBringsTheBoxNearer) {
   // gathered at the leaves' corners 0.75%, read from the leaves' means 1.07% (measured).
   // Asserted: under 0.85%, and a fifth better than the means.
   const gi::RadiosityScene box = gi::cornell_box();
-  std::string why;
-  const auto truth = gi::load_reference(
-      std::filesystem::path(GI_SOURCE_DIR) / "lessons/references/cornell_256x256",
-      gi::reference_fingerprint(gi::make_path_scene(gi::make_path_scene_by_name("cornell")), {}, 256, 256), &why);
-  ASSERT_TRUE(truth) << why;
+  const std::optional<gi::Truth> truth =
+      gi::stored_truth(std::filesystem::path(GI_SOURCE_DIR) / "lessons/references", "cornell", 256, 256);
   const gi::BlockMask mask = gi::interior_blocks(box.surfaces, box.camera, 256, 256, 8);
   gi::Recipe recipe;
   recipe.solver = gi::RecipeSolver::Hierarchical;

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
+#include "gi/pathtrace/path_truth.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/twopass/picture_mask.hpp"
 #include "gi/twopass/radiosity_pass.hpp"
@@ -58,12 +58,7 @@ TEST(TwoPass, TheDiffuseBoxAgreesWithThePathTracedReference) {
   // 3% still catches direct light counted twice (tens of per cent), a missing cosine or
   // a wrong B - E - D.
   const gi::TwoPassScene scene = gi::make_two_pass_scene("cornell");
-  const gi::PathScene path_scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
-  std::string why;
-  const auto truth = gi::load_reference(std::string(GI_SOURCE_DIR) + "/lessons/references/cornell_256x256",
-                                        gi::reference_fingerprint(path_scene, {}, 256, 256), &why);
-  ASSERT_TRUE(truth) << why;
-  const gi::PathReference small = gi::downsample(*truth, 4);
+  const gi::Truth small = gi::stored_truth(std::string(GI_SOURCE_DIR) + "/lessons/references", "cornell", 64, 64);
   const gi::BlockMask mask = gi::diffuse_interior_blocks(scene, 64, 64, 4);
   ASSERT_GE(mask.count(), 10);
   gi::RadiosityPassSettings p = small_pass(600);
