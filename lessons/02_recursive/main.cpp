@@ -129,7 +129,9 @@ int main(int argc, char** argv) {
       .add("--max-depth", max_depth, "sweep depth limits 0..N", 0, 40)
       .add("--reference-depth", reference_depth, "depth limit of the reference render", 1, 60)
       .add_optional("--depth", single_depth, "render once at this depth limit instead of the sweep", 0, 60)
-      .add("--repeat", repeat, "renders per measurement; the median time is reported", 1, 50);
+      .add("--repeat", repeat, "renders per measurement; the median time is reported", 1, 50)
+      .add_flag("--fast-queries", settings.trace.fast_queries,
+                "ray queries and local shading by the tuned *_fast files (world_fast.cpp, whitted_fast.cpp): the same picture, sooner");
   return lesson.run(argc, argv, [&] {
     const gi::World world = gi::make_world(scene, gi::acceleration_from_name(accel));
 

@@ -84,3 +84,24 @@ TEST(Render, CentresAreTracePerPixelBitForBit) {
   }
 }
 
+
+// The tracer on the fast queries and local shading (TraceSettings::fast_queries,
+// world_fast.hpp, whitted_fast.hpp) gives the plain tracer's picture to the byte and its
+// ray counts, whatever the acceleration and the thread count.
+TEST(Render, FastQueriesGiveTheSamePictureAndCounts) {
+  for (const char* scene : {"s10", "soft", "whitted"}) {
+    for (gi::Acceleration acceleration : {gi::Acceleration::BruteForce, gi::Acceleration::Bvh, gi::Acceleration::FastBvh}) {
+      const gi::World world = gi::make_world(gi::make_scene(scene), acceleration);
+      gi::RenderSettings settings;
+      settings.width = 80;
+      settings.height = 60;
+      settings.trace.max_depth = 8;
+      const gi::RenderResult plain = gi::render(world, settings, 3, 1);
+      settings.trace.fast_queries = true;
+      const gi::RenderResult fast = gi::render(world, settings, 3, 2);
+      EXPECT_EQ(fast.image.pixels, plain.image.pixels) << scene << ", " << gi::name(acceleration);
+      EXPECT_EQ(fast.counts.at, plain.counts.at) << scene << ", " << gi::name(acceleration);
+      EXPECT_GT(plain.counts.of(gi::RayKind::Shadow), 0u) << scene;
+    }
+  }
+}

@@ -50,7 +50,11 @@ CachedTruth cached_reference(const World& world, const RenderSettings& settings,
                              const std::string& scene_key, const std::filesystem::path& folder) {
   const TruthKey key = reference_key(world, settings, seed, scene_key);
   return cached_truth(folder / ("reference_" + key.fingerprint), key, seed,
-                      [&](const std::string&) { return render(world, settings, seed, threads).film; },
+                      [&](const std::string&) {
+                        Film film = make_film(settings.width, settings.height, seed);
+                        render(world, settings, film, threads);
+                        return film;
+                      },
                       settings_of(world, settings, seed, scene_key));
 }
 

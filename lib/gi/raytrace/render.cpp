@@ -22,11 +22,13 @@ void check(const RenderSettings& s) {
   check(s.trace.soft_shadows);
 }
 
-RenderResult render(const World& world, const RenderSettings& settings, std::uint64_t seed, int threads) {
+RenderResult render(const World& world, const RenderSettings& settings, Film& film, int threads) {
   check(settings);
-  RenderResult result{make_film(settings.width, settings.height, seed), {}, {}, {}, 0};
+  if (film.width != settings.width || film.height != settings.height)
+    throw std::invalid_argument("render: the film is not the settings' size");
+  RenderResult result;
   result.samples.assign(static_cast<std::size_t>(settings.width) * settings.height, 0);
-  std::vector<RayCounts> tile_counts(render_tasks(result.film));
+  std::vector<RayCounts> tile_counts(render_tasks(film));
   // L(ray) by Whitted's recursion, each eye ray counted (per tile: no lock) and
   // tallied for its pixel.
   const auto whitted = [&](const Ray& eye, PixelSample& sample) {
@@ -36,11 +38,17 @@ RenderResult render(const World& world, const RenderSettings& settings, std::uin
     return trace(world, eye, settings.trace, counts, sample.rng);
   };
   const Timer timer;
-  render_pass(result.film, world.scene.camera, settings.sampling, whitted, threads);
+  render_pass(film, world.scene.camera, settings.sampling, whitted, threads);
   result.seconds = timer.seconds();
   for (const RayCounts& counts : tile_counts) result.counts += counts;
-  result.image = film_mean(result.film);
+  result.image = film_mean(film);
   return result;
+}
+
+RenderResult render(const World& world, const RenderSettings& settings, std::uint64_t seed, int threads) {
+  check(settings);
+  Film film = make_film(settings.width, settings.height, seed);
+  return render(world, settings, film, threads);
 }
 
 }  // namespace gi

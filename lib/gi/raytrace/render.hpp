@@ -20,8 +20,7 @@ struct RenderSettings {
 };
 
 struct RenderResult {
-  Film film;                 // the samples: film_mean is the picture, film_standard_error its noise
-  Image image;               // film_mean(film)
+  Image image;               // the film's mean: the picture
   RayCounts counts;
   std::vector<int> samples;  // eye rays per pixel, row-major
   double seconds = 0;        // wall-clock time of the render loop alone
@@ -32,8 +31,11 @@ void check(const RenderSettings& settings);
 
 // Whitted's tracer as a radiance function (render_pass.hpp): eye rays through every
 // pixel as the sampling says, each traced recursively by trace(), on `threads` threads
-// (0 = all cores). Pixel i draws its sample positions and shadow rays from stream i of
-// `seed` (the film's), so the image is the same for any thread count.
+// (0 = all cores), added to `film` (of the settings' size) as one pass. Pixel i draws its
+// sample positions and shadow rays from the film's stream i, so the image is the same for
+// any thread count; the film keeps each pixel's spread (film_standard_error).
+RenderResult render(const World& world, const RenderSettings& settings, Film& film, int threads);
+// The same on a film of its own, whose streams are those of `seed`.
 RenderResult render(const World& world, const RenderSettings& settings, std::uint64_t seed, int threads);
 
 }  // namespace gi
