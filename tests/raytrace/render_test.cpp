@@ -16,7 +16,9 @@ TEST(Render, SameImageAndCountsForAnyThreadCount) {
                                 gi::Sampling{gi::Sampler::Adaptive, 1, 0.05, 3}}) {
     settings.sampling = sampling;
     const gi::RenderResult one = gi::render(world, settings, 1, 1);
-    if (sampling.sampler == gi::Sampler::Centre) EXPECT_EQ(one.counts.of(gi::RayKind::Primary), 97u * 61u);
+    if (sampling.sampler == gi::Sampler::Centre) {
+      EXPECT_EQ(one.counts.of(gi::RayKind::Primary), 97u * 61u);
+    }
     for (int threads : {2, 3, 7}) {
       const gi::RenderResult many = gi::render(world, settings, 1, threads);
       EXPECT_EQ(many.image.pixels, one.image.pixels) << threads << " threads";
