@@ -1,6 +1,7 @@
 // The truth a lesson scores against is checked before any work (render/truth.hpp):
 // lessons 14, 15 and 16 stop in one line with status 1, having written nothing, when a
-// stored truth is damaged; lessons 03, 04 and 14 render again a reference they keep in
+// stored truth is damaged or stale (whole, but made for another scene or other
+// settings); lessons 03, 04 and 14 render again a reference they keep in
 // their folder when its files are damaged, and say why.
 #include <gtest/gtest.h>
 
@@ -20,29 +21,56 @@ using gi_test::run;
 
 const fs::path references = fs::path(GI_SOURCE_DIR) / "lessons/references";
 
+struct Lesson {
+  std::string name, args;
+  bool folder;  // --references takes the folder, --reference the stem
+};
+// The lessons that score against the Cornell box's stored truth, at small sizes.
+const Lesson lessons[] = {{"14_path_tracing", "--width 32 --height 32 --max-spp 2", false},
+                          {"15_radiosity_vs_path_tracing", "--size 64 --max-spp 2", false},
+                          {"16_two_pass", "--scene cornell --width 32 --height 32", true}};
+
+// Every lesson of `lessons`, given the truth at `copy`, stops before it writes anything,
+// with status 1 and one line that says the truth cannot be used and `why`.
+void expect_refused(const fs::path& copy, const std::string& why, const std::string& how) {
+  for (const Lesson& lesson : lessons) {
+    const std::string folder = out_dir("truth_refused");
+    fs::remove_all(folder);
+    const std::string where = lesson.folder ? "--references " + copy.parent_path().string() : "--reference " + copy.string();
+    const LessonRun r = run(lesson.name, lesson.args + " " + where + " --out " + folder);
+    EXPECT_EQ(r.status, 1) << lesson.name << ", " << how << ":\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << lesson.name << ", " << how << ":\n" << r.output;
+    EXPECT_NE(r.output.find(lesson.name + ": error: the stored truth of cornell cannot be used: "), std::string::npos)
+        << lesson.name << ", " << how << ":\n" << r.output;
+    EXPECT_NE(r.output.find(why), std::string::npos) << lesson.name << ", " << how << ":\n" << r.output;
+    EXPECT_FALSE(fs::exists(folder)) << lesson.name << ", " << how << ": work started before the truth was refused";
+  }
+}
+
 TEST(StoredTruths, ADamagedOneStopsTheLessonBeforeAnyWork) {
-  struct Lesson {
-    std::string name, args;
-    bool folder;  // --references takes the folder, --reference the stem
-  };
-  const Lesson lessons[] = {{"14_path_tracing", "--width 32 --height 32 --max-spp 2", false},
-                            {"15_radiosity_vs_path_tracing", "--size 64 --max-spp 2", false},
-                            {"16_two_pass", "--scene cornell --width 32 --height 32", true}};
-  for (const std::string& how : gi_test::truth_damages)
-    for (const Lesson& lesson : lessons) {
-      const fs::path copy = fs::path(out_dir("truth_copies")) / "cornell_256x256";
-      gi_test::copy_truth(references / "cornell_256x256", copy);
-      gi_test::damage_truth(copy, how);
-      const std::string folder = out_dir("truth_refused");
-      fs::remove_all(folder);
-      const std::string where = lesson.folder ? "--references " + copy.parent_path().string() : "--reference " + copy.string();
-      const LessonRun r = run(lesson.name, lesson.args + " " + where + " --out " + folder);
-      EXPECT_EQ(r.status, 1) << lesson.name << ", " << how << ":\n" << r.output;
-      EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << lesson.name << ", " << how << ":\n" << r.output;
-      EXPECT_NE(r.output.find(lesson.name + ": error: the stored truth of cornell cannot be used"), std::string::npos)
-          << lesson.name << ", " << how << ":\n" << r.output;
-      EXPECT_FALSE(fs::exists(folder)) << lesson.name << ", " << how << ": work started before the truth was refused";
-    }
+  for (const std::string& how : gi_test::truth_damages) {
+    const fs::path copy = fs::path(out_dir("truth_copies")) / "cornell_256x256";
+    gi_test::copy_truth(references / "cornell_256x256", copy);
+    gi_test::damage_truth(copy, how);
+    expect_refused(copy, copy.filename().string(), how);  // the reason varies with the damage; the file is named
+  }
+}
+
+// A stale truth is whole -- its checksums hold -- but of something else: here made by
+// 14_make_reference at the Cornell box's size for the furnace, and for the Cornell box
+// itself with two bounces per path, then put where the Cornell box's truth belongs.
+// Trusted, it would score every picture against the wrong radiance.
+TEST(StoredTruths, AStaleOneIsRefusedBeforeAnyWork) {
+  for (const std::string made_as : {"--scene furnace", "--scene cornell --max-depth 2"}) {
+    const std::string made_in = out_dir("truth_stale_made");
+    fs::remove_all(made_in);  // a truth left by an earlier run would be extended
+    const LessonRun made = run("14_make_reference", made_as + " --width 256 --height 256 --batch-spp 2 --out " + made_in);
+    ASSERT_EQ(made.status, 0) << made.output;
+    const std::string scene = made_as.substr(8, made_as.find(' ', 8) - 8);  // after "--scene "
+    const fs::path copy = fs::path(out_dir("truth_stale_copies")) / "cornell_256x256";
+    gi_test::copy_truth(fs::path(made_in) / (scene + "_256x256"), copy);
+    expect_refused(copy, "cornell_256x256.txt: it was made for another scene or other settings", made_as);
+  }
 }
 
 // A lesson's own reference, kept in its folder: damaged, it is rendered again (and said
