@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "gi/core/rng.hpp"
-#include "gi/raytrace/pixel_samplers.hpp"
+#include "gi/render/pixel_samplers.hpp"
 #include "support/print.hpp"
 #include "support/statistics.hpp"
 

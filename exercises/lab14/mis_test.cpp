@@ -8,7 +8,7 @@
 #include <string>
 
 #include "gi/core/sampling.hpp"
-#include "gi/pathtrace/film.hpp"
+#include "gi/pathtrace/path_trace.hpp"
 #include "gi/pathtrace/next_event.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/roulette.hpp"
@@ -101,7 +101,7 @@ TEST(Ex14_6_BsdfWeight, TheFurnaceCountsDirectLightOnce) {
     std::vector<double> means;
     for (int seed = 1; seed <= 10; ++seed) {
       gi::Film film = gi::make_film(8, 8, seed);
-      gi::render_pass(film, furnace, settings, 16, 1);
+      gi::path_trace(film, furnace, settings, 16, 1);
       double sum = 0;
       for (const gi::Pixel& p : gi::film_mean(film).pixels) sum += p.x;
       means.push_back(sum / 64);

@@ -19,7 +19,7 @@
 #include "gi/geometry/aabb.hpp"
 #include "gi/radiosity/form_factors/hemicube.hpp"
 #include "gi/radiosity/system/solver.hpp"
-#include "gi/raytrace/pixel_samplers.hpp"
+#include "gi/render/pixel_samplers.hpp"
 #include "gi/raytrace/soft_shadows.hpp"
 
 namespace gi::print {

@@ -1,8 +1,10 @@
 // 02_tachyon_bench: not a lesson. Our Whitted tracer against Tachyon, John E. Stone's
 // production ray tracer (Debian's tachyon-bin-nox), on s10 -- ten spheres on a
 // checkered plane, two lights, a mirror and a glass ball -- at 800 x 600 and depth
-// limit 8: the picture `02_recursive --scene s10 --depth 8` renders, whose Tachyon twin
-// is lessons/scenes/s10.tachyon.dat. The two take turns, round after round (ours on
+// limit 8: the picture `02_recursive --scene s10 --depth 8 --fast-queries` renders (the
+// tuned ray queries and local shading of accel/world_fast.cpp and raytrace/whitted_fast.cpp;
+// --plain-queries for the textbook's, the same picture), whose Tachyon twin is
+// lessons/scenes/s10.tachyon.dat. The two take turns, round after round (ours on
 // one thread, Tachyon on one, ours on N, Tachyon on N), so that a busy moment of a
 // shared machine falls on both. Each program's own clock of its render is read: ours
 // is the render loop's (lesson 02's `ms` column), Tachyon's the "Ray Tracing Time" it
@@ -110,11 +112,14 @@ int main(int argc, char** argv) {
   Tachyon tachyon;
   int runs = 5, threads = 2;
   std::string accel = "brute-force";  // lesson 02's default (docs/02_recursive.md, "Speed")
+  bool plain_queries = false;
   lesson.add_image_size(tachyon.width, tachyon.height);  // both programs: Tachyon takes it as -res
   lesson.options()
       .add("--runs", runs, "renders of each program at each thread count, taking turns", 5, 1000)
       .add("--threads", threads, "the thread count set against one, for both programs", 2, 256)
       .add("--accel", accel, "how our rays find what they hit (lesson 05)", gi::acceleration_names())
+      .add_flag("--plain-queries", plain_queries,
+                "our ray queries and local shading by the textbook's code, not the *_fast files' (the same picture)")
       .add("--time-limit", tachyon.time_limit, "seconds a Tachyon run may take before it is stopped", 1, 3600);
   lesson.add_check([&] {
     const std::optional<fs::path> found = gi::find_on_path("tachyon");
@@ -132,16 +137,15 @@ int main(int argc, char** argv) {
     settings.width = tachyon.width;
     settings.height = tachyon.height;
     settings.trace.max_depth = 8;  // RAYDEPTH 8 in the Tachyon file
+    settings.trace.fast_queries = !plain_queries;
 
     // Round after round, each program at each thread count once.
     Times ours_one, tachyon_one, ours_many, tachyon_many;
     gi::Progress progress("rendering", 4LL * runs);
     for (int run = 0; run < runs; ++run) {
-      settings.threads = 1;
-      ours_one.ms.push_back(1e3 * gi::render(world, settings).seconds);
+      ours_one.ms.push_back(1e3 * gi::render(world, settings, 1, 1).seconds);
       tachyon_one.ms.push_back(tachyon_ms(tachyon, 1));
-      settings.threads = threads;
-      ours_many.ms.push_back(1e3 * gi::render(world, settings).seconds);
+      ours_many.ms.push_back(1e3 * gi::render(world, settings, 1, threads).seconds);
       tachyon_many.ms.push_back(tachyon_ms(tachyon, threads));
       progress.advance(4);
     }
@@ -171,7 +175,9 @@ int main(int argc, char** argv) {
     std::cout << '\n';
     lesson.say("ours/Tachyon: our median over Tachyon's (below 1, ours is faster); speed-up: the median on one "
                "thread over the median on " + many + ".");
-    lesson.say("ours: gi-workbench's Whitted tracer (lesson 02), --accel " + accel + ", " + build() + ".");
+    lesson.say("ours: gi-workbench's Whitted tracer (lesson 02), --accel " + accel + ", ray queries and local shading by " +
+               (plain_queries ? "world.cpp and whitted.cpp" : "world_fast.cpp and whitted_fast.cpp") + ", " + build() +
+               ".");
     const std::string package = gi::debian_package_of(tachyon.program);
     lesson.say("Tachyon: " +
                (tachyon.version.empty() ? "it prints no version" : "\"Version " + tachyon.version + "\" as it prints it") +

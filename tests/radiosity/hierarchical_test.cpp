@@ -329,7 +329,7 @@ TEST(Hierarchical, ExactDirectLightAgreesWithTheUniformRecipe) {
   gi::Recipe recipe;
   recipe.elements = 2000;
   recipe.form_factors.hemicube_resolution = 0;
-  const gi::RecipeResult uniform = gi::solve_recipe(scene.surfaces, recipe);
+  const gi::RecipeResult uniform = gi::solve_recipe(scene.surfaces, recipe, 0);
   gi::HierarchicalSettings s;
   s.exact_direct = true;
   s.refinement.min_area = 3e-4;  // the lesson's; 1e-4 is 4x the leaves, 3.5% (lighter under the sanitizers)
@@ -376,8 +376,7 @@ TEST(Hierarchical, SeatedInTheRecipeGivesTheRunsSolution) {
   recipe.solver = gi::RecipeSolver::Hierarchical;
   recipe.hierarchical.refinement.threshold = 1e-2;
   recipe.hierarchical.refinement.min_area = 1e-3;
-  recipe.threads = 2;
-  const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, recipe);
+  const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, recipe, 2);
   gi::HierarchicalSettings s = recipe.hierarchical;
   s.exact_direct = true;
   s.tolerance = recipe.tolerance;

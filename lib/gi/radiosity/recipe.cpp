@@ -75,13 +75,13 @@ SolverResult run_solver(const RadiositySystem& system, const Mesh& mesh, const S
 
 // Hierarchical radiosity from start to finish: refinement counts as its form
 // factors, the solves as its solver, the rest of its clock as the direct light.
-RecipeResult hierarchical_recipe(const std::vector<Surface>& surfaces, const Recipe& r) {
+RecipeResult hierarchical_recipe(const std::vector<Surface>& surfaces, const Recipe& r, int threads) {
   HierarchicalSettings settings = r.hierarchical;
   settings.exact_direct = r.exact_direct;
   settings.direct = r.direct;
   settings.tolerance = r.tolerance;
   const Timer timer;
-  HierarchicalRun run = run_hierarchical({"", surfaces, {}}, settings, r.threads);
+  HierarchicalRun run = run_hierarchical({"", surfaces, {}}, settings, threads);
   RecipeResult result;
   for (const RefinementRound& round : run.result.rounds)
     result.form_factor_seconds += round.refine_seconds, result.solve_seconds += round.solve_seconds;
@@ -99,8 +99,8 @@ RecipeResult hierarchical_recipe(const std::vector<Surface>& surfaces, const Rec
 
 }  // namespace
 
-RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe) {
-  if (recipe.solver == RecipeSolver::Hierarchical) return hierarchical_recipe(surfaces, recipe);
+RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe, int threads) {
+  if (recipe.solver == RecipeSolver::Hierarchical) return hierarchical_recipe(surfaces, recipe, threads);
   RecipeResult result;
   result.mesh = make_mesh(surfaces, {patch_size_for(surfaces, recipe.elements, recipe.elements_per_side),
                                      recipe.elements_per_side});
@@ -118,13 +118,13 @@ RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& re
   const FormFactorScene receivers(element_shapes(mesh));
   Timer timer;
   RadiositySystem system = make_system(
-      mesh, shooting ? FormFactorMatrix{} : form_factor_matrix(receivers, r.form_factors, r.threads, &result.hemicube));
+      mesh, shooting ? FormFactorMatrix{} : form_factor_matrix(receivers, r.form_factors, threads, &result.hemicube));
   result.form_factor_seconds = timer.seconds();
 
   timer.restart();
   const std::vector<Color> E = system.emission;
   if (r.exact_direct) {
-    result.direct = direct_radiosity(receivers, mesh, r.direct);
+    result.direct = direct_radiosity(receivers, mesh, r.direct, threads);
     system = indirect_system(std::move(system), result.direct);  // moved, not copied: F may be 100s of MB
   }
   result.direct_seconds = r.exact_direct ? timer.seconds() : 0;

@@ -72,10 +72,10 @@ Color open_direct_light(const Hierarchy& h, const Node& node, const DirectLighti
 // exact_direct: every leaf's emission becomes its direct light D (the source term of
 // the indirect system); a leaf keeps its D once computed (`known`, by node).
 void set_direct_light(Hierarchy& h, const DirectLighting& lights, const FormFactorScene& blockers,
-                      const DirectLightSettings& settings, std::vector<char>& known) {
+                      const DirectLightSettings& settings, std::vector<char>& known, int threads) {
   const std::vector<int> leaf = leaves(h);
   known.resize(h.nodes.size(), 0);
-  parallel_for(static_cast<int>(leaf.size()), settings.threads, [&](int k) {
+  parallel_for(static_cast<int>(leaf.size()), threads, [&](int k) {
     Node& node = h.nodes[leaf[k]];
     if (!known[leaf[k]]) node.E = open_direct_light(h, node, lights, blockers, settings.receiver_points);
   });
@@ -190,7 +190,7 @@ HierarchicalResult solve_hierarchical(Hierarchy& h, const FormFactorScene& block
       settled = true;
       break;
     }
-    if (s.exact_direct) set_direct_light(h, *lights, blockers, s.direct, known);
+    if (s.exact_direct) set_direct_light(h, *lights, blockers, s.direct, known, threads);
     const std::vector<int> leaf = leaves(h);
     const std::vector<Color> before = radiosity_of(h, leaf);
     const double start = clock.seconds();

@@ -1,6 +1,5 @@
 #pragma once
 #include <array>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,20 +27,18 @@ std::string sampler_name(Sampler sampler);
 std::vector<std::string> sampler_names();
 Sampler sampler_from_name(const std::string& name);  // throws std::invalid_argument
 
+// How the eye rays sample each pixel, for a reader who wants the same picture:
+// "one eye ray through the pixel centre", "4 x 4 jittered eye rays, box filter" ...
+std::string describe_pixel_samples(const Sampling& sampling);
+
 // Sample positions in the unit square [0, 1)^2 of a pixel.
-std::vector<vec2> grid_positions(int n);                 // cell centres of an n x n grid
-std::vector<vec2> random_positions(int count, Rng& rng);  // independent, uniform
-std::vector<vec2> jittered_positions(int n, Rng& rng);    // one uniform point per grid cell
+std::vector<vec2> grid_positions(int n);                                // cell centres of an n x n grid
+void random_positions(int count, Rng& rng, std::vector<vec2>& positions);  // appends `count`, independent, uniform
+std::vector<vec2> jittered_positions(int n, Rng& rng);                   // one uniform point per grid cell
 
 // Whitted's test: do the radiances at a square's four corners differ by more than
 // `threshold` (in any colour channel) from their mean?
 bool should_subdivide(const std::array<Color, 4>& corners, double threshold);
-
-// The colour of pixel (x, y) under a sampling scheme, with a box filter: the mean of
-// the radiance at the sample positions. `radiance(px, py)` traces the eye ray through
-// image position (px, py). `samples` receives the number of eye rays used.
-Color sample_pixel(const Sampling& sampling, int x, int y, Rng& rng,
-                   const std::function<Color(double, double)>& radiance, int& samples);
 
 // Throws std::invalid_argument for n outside [1, 64], a negative threshold or
 // max_subdivisions outside [0, 8].

@@ -1,8 +1,8 @@
-#include "gi/raytrace/adaptive.hpp"
+#include "gi/render/adaptive.hpp"
 
 #include <array>
 
-#include "gi/raytrace/pixel_samplers.hpp"
+#include "gi/render/pixel_samplers.hpp"
 
 namespace gi {
 

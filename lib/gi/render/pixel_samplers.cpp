@@ -1,9 +1,9 @@
-#include "gi/raytrace/pixel_samplers.hpp"
+#include "gi/render/pixel_samplers.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "gi/core/not_implemented.hpp"
-#include "gi/raytrace/adaptive.hpp"
 
 namespace gi {
 
@@ -21,6 +21,24 @@ Sampler sampler_from_name(const std::string& name) {
   throw std::invalid_argument("unknown sampler '" + name + "' (centre, grid, random, jittered, adaptive)");
 }
 
+std::string describe_pixel_samples(const Sampling& s) {
+  const std::string grid = std::to_string(s.n) + " x " + std::to_string(s.n) + " ";
+  switch (s.sampler) {
+    case Sampler::Centre: return "one eye ray through the pixel centre";
+    case Sampler::Grid: return grid + "eye rays on a regular grid, box filter";
+    case Sampler::Random: return grid + "uniformly random eye rays, box filter";
+    case Sampler::Jittered: return grid + "jittered eye rays, box filter";
+    case Sampler::Adaptive:
+    {
+      char threshold[32];
+      std::snprintf(threshold, sizeof threshold, "%g", s.threshold);
+      return "adaptive (Whitted): pixel corners, subdivided up to " + std::to_string(s.max_subdivisions) +
+             " times where they differ by more than " + threshold + ", box filter";
+    }
+  }
+  return "?";
+}
+
 void check(const Sampling& s) {
   if (s.n < 1 || s.n > 64) throw std::invalid_argument("sampling: n must lie in [1, 64]");
   if (!(s.threshold >= 0)) throw std::invalid_argument("sampling: the adaptive threshold must be >= 0");
@@ -35,13 +53,11 @@ std::vector<vec2> grid_positions(int n) {
   return positions;
 }
 
-std::vector<vec2> random_positions(int count, Rng& rng) {
-  std::vector<vec2> positions;
+void random_positions(int count, Rng& rng, std::vector<vec2>& positions) {
   for (int k = 0; k < count; ++k) {
     const double u = rng.uniform();
     positions.emplace_back(u, rng.uniform());
   }
-  return positions;
 }
 
 std::vector<vec2> jittered_positions(int n, Rng& rng) {
@@ -64,31 +80,6 @@ bool should_subdivide(const std::array<Color, 4>& corners, double threshold) {
     if (max_component(glm::abs(c - mean)) > threshold) return true;
   return false;
   // END EXERCISE 3.2
-}
-
-Color sample_pixel(const Sampling& sampling, int x, int y, Rng& rng,
-                   const std::function<Color(double, double)>& radiance, int& samples) {
-  if (sampling.sampler == Sampler::Centre) {  // the common case, without allocating
-    samples = 1;
-    return radiance(x + 0.5, y + 0.5);
-  }
-  std::vector<vec2> positions;
-  switch (sampling.sampler) {
-    case Sampler::Centre: break;  // returned above
-    case Sampler::Grid: positions = grid_positions(sampling.n); break;
-    case Sampler::Random: positions = random_positions(sampling.n * sampling.n, rng); break;
-    case Sampler::Jittered: positions = jittered_positions(sampling.n, rng); break;
-    case Sampler::Adaptive: {
-      const AdaptiveSample a = adaptive_sample(
-          [&](vec2 p) { return radiance(x + p.x, y + p.y); }, sampling.threshold, sampling.max_subdivisions);
-      samples = a.samples;
-      return a.colour;
-    }
-  }
-  Color sum(0.0);
-  for (const vec2& p : positions) sum += radiance(x + p.x, y + p.y);
-  samples = static_cast<int>(positions.size());
-  return sum / static_cast<double>(positions.size());
 }
 
 }  // namespace gi
