@@ -4,17 +4,17 @@
 
 namespace gi {
 
-Color gather(const Hierarchy& h, const Node& receiver, const std::vector<Color>& B) {
+Color gather(const Hierarchy& h, const Node& receiver, const std::vector<Color>& sent) {
   // BEGIN EXERCISE 13.3 gathering over links
   Color sum(0.0);
   for (const Link& link : receiver.links) {
     const Node& q = h.nodes[link.source];
     if (q.leaf()) {
-      sum += link.F * link.visibility * B[link.source];
+      sum += link.F * link.visibility * sent[link.source];
       continue;
     }
     // Each quarter of the source sends its share of the light with its own B.
-    for (int c = 0; c < 4; ++c) sum += link.F * link.by_quarter[c] * B[q.children[c]];
+    for (int c = 0; c < 4; ++c) sum += link.F * link.by_quarter[c] * sent[q.children[c]];
   }
   return receiver.rho * sum;
   // END EXERCISE 13.3
@@ -23,7 +23,7 @@ Color gather(const Hierarchy& h, const Node& receiver, const std::vector<Color>&
 Color push_pull(Hierarchy& h, int n, const Color& pushed) {
   // BEGIN EXERCISE 13.4 push-pull
   const Color down = pushed + h.nodes[n].gathered;
-  if (h.nodes[n].leaf()) return h.nodes[n].B = h.nodes[n].E + down;
+  if (h.nodes[n].leaf()) return h.nodes[n].B = h.nodes[n].source + h.nodes[n].gather_scale * down;
   Color sum(0.0);
   double area = 0;
   for (int child : h.nodes[n].children) {
@@ -31,8 +31,26 @@ Color push_pull(Hierarchy& h, int n, const Color& pushed) {
     sum += a * push_pull(h, child, down);
     area += a;
   }
-  return h.nodes[n].B = area > 0 ? sum / area : h.nodes[n].E + down;  // all buried: nothing to mean
+  return h.nodes[n].B = area > 0 ? sum / area : h.nodes[n].source + down;  // all buried: nothing to mean
   // END EXERCISE 13.4
+}
+
+void pull_sent(Hierarchy& h) {
+  // Children come after their parent in the vector: backwards, a node's children are done before it.
+  for (int n = static_cast<int>(h.nodes.size()) - 1; n >= 0; --n) {
+    Node& node = h.nodes[n];
+    if (node.open_area <= 0) {
+      node.sent = Color(0.0);  // wholly buried: it holds no light to send
+      continue;
+    }
+    if (node.leaf()) {
+      node.sent = node.send_scale * node.B;
+      continue;
+    }
+    Color sum(0.0);
+    for (int child : node.children) sum += h.nodes[child].open_area * h.nodes[child].sent;
+    node.sent = sum / node.open_area;
+  }
 }
 
 }  // namespace gi
