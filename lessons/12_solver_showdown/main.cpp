@@ -20,6 +20,7 @@
 #include "gi/radiosity/display/display.hpp"
 #include "gi/radiosity/system/float_sweep.hpp"
 #include "gi/radiosity/system/progressive.hpp"
+#include "gi/radiosity/system/shooting_furnace.hpp"
 #include "gi/radiosity/display/picture_error.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
@@ -371,6 +372,8 @@ int main(int argc, char** argv) {
     showdown(open, lesson);
     std::cout << '\n';
     stability(closed, open, meshed(gi::closed_box(1.0), 150, lesson.threads()), lesson.threads(), lesson);
+    std::cout << '\n';
+    lesson.table(gi::shooting_furnace_table(gi::shooting_furnace(150, lesson.threads())), "shooting_furnace");
     std::cout << '\n';
     precision(closed, lesson);
     if (!skip_mesh) {
