@@ -62,10 +62,10 @@ Coupling coupling_of(const Hierarchy& h) {
 }
 
 // Row sums sum_q T_pq c_q of every leaf (by node index, into `row`): what is sent pulled
-// up the trees (each node the open-area mean of its children's, as push_pull.hpp's
-// pull_sent pulls it; a node wholly buried sends nothing), gathered, then pushed down,
-// each node adding its parent's. Children come after their parent in the vector: a
-// backward pass meets them first, a forward one their parents.
+// up the trees (each node the open-area mean of its children's, as the solver pulls
+// Node::sent; a node wholly buried sends nothing), gathered, then pushed down, each
+// node adding its parent's. Children come after their parent in the vector: a backward
+// pass meets them first, a forward one their parents.
 void row_sums(const Hierarchy& h, const Coupling& T, const std::vector<double>& c, std::vector<double>& pulled,
               std::vector<double>& row) {
   for (int n = static_cast<int>(h.nodes.size()) - 1; n >= 0; --n) {

@@ -15,6 +15,28 @@ namespace gi {
 
 namespace {
 
+// What every node sends along its links: a leaf its B times its send_scale (balance.hpp;
+// 1 until the links are balanced), a node above the open-area mean of its children's,
+//   sent_p = sum_c A_c sent_c / sum_c A_c
+// and a node wholly buried nothing.
+void pull_sent(Hierarchy& h) {
+  // Children come after their parent in the vector: backwards, a node's children are done before it.
+  for (int n = static_cast<int>(h.nodes.size()) - 1; n >= 0; --n) {
+    Node& node = h.nodes[n];
+    if (node.open_area <= 0) {
+      node.sent = Color(0.0);  // wholly buried: it holds no light to send
+      continue;
+    }
+    if (node.leaf()) {
+      node.sent = node.send_scale * node.B;
+      continue;
+    }
+    Color sum(0.0);
+    for (int child : node.children) sum += h.nodes[child].open_area * h.nodes[child].sent;
+    node.sent = sum / node.open_area;
+  }
+}
+
 // One step: pull what every node sends, gather over every node, in parallel blocks
 // (each node writes its own), then push-pull down every surface's tree.
 void iterate(Hierarchy& h, int threads) {

@@ -33,7 +33,7 @@ struct Node {
   // At a leaf, its radiosity; above, the area-weighted mean of its children's (push-pull).
   Color B{0.0};
   // What its links carry away from it: at a leaf B times send_scale, above the
-  // area-weighted mean of its children's (push_pull.hpp's pull_sent).
+  // area-weighted mean of its children's (hierarchical_solver.cpp's pull_sent).
   Color sent{0.0};
   // rho times what its own links bring in, before push-pull hands it to its leaves.
   Color gathered{0.0};

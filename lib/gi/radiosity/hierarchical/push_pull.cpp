@@ -35,22 +35,4 @@ Color push_pull(Hierarchy& h, int n, const Color& pushed) {
   // END EXERCISE 13.4
 }
 
-void pull_sent(Hierarchy& h) {
-  // Children come after their parent in the vector: backwards, a node's children are done before it.
-  for (int n = static_cast<int>(h.nodes.size()) - 1; n >= 0; --n) {
-    Node& node = h.nodes[n];
-    if (node.open_area <= 0) {
-      node.sent = Color(0.0);  // wholly buried: it holds no light to send
-      continue;
-    }
-    if (node.leaf()) {
-      node.sent = node.send_scale * node.B;
-      continue;
-    }
-    Color sum(0.0);
-    for (int child : node.children) sum += h.nodes[child].open_area * h.nodes[child].sent;
-    node.sent = sum / node.open_area;
-  }
-}
-
 }  // namespace gi

@@ -8,16 +8,11 @@ namespace gi {
 // One step of the hierarchical solve is a gather over every link, then a push-pull
 // over every quadtree (Hanrahan, Salzman and Aupperle 1991).
 
-// Pulling what the nodes send: a leaf sends its B times its send_scale (balance.hpp;
-// 1 until the links are balanced), a node above the open-area mean of its children's,
-//   sent_p = sum_c A_c sent_c / sum_c A_c
-// (A_c the child's open area, Node::open_area), and a node wholly buried sends nothing.
-// Sets Node::sent of every node.
-void pull_sent(Hierarchy& hierarchy);
-
 // Gathering: what a node's links bring in, reflected,
 //   gathered_p = rho_p * sum over its links l of F_l V_l sent_source(l)
-// per colour channel; `sent` holds what every node sends (node index -> Node::sent). A
+// per colour channel; `sent` holds what every node sends (node index -> Node::sent: its
+// B, or the leaves' B times their send_scale where the links are balanced, pulled up as
+// open-area means; hierarchical_solver.cpp fills it before every gather). A
 // source that has children sends each quarter's share of V by that quarter's own,
 //   F_l * sum over c of V_l,c sent_child c        (Link::by_quarter)
 // so that a link whose light comes mostly from the source's bright or near part
