@@ -13,20 +13,20 @@ namespace gi {
 
 namespace {
 
-// The probe directions, in a frame whose z is the normal: the normal, and rings at 25,
-// 50 and 75 degrees from it (6, 10 and 14 directions), each ring turned by half a step
-// against the one inside it.
-std::vector<vec3> probe_directions() {
-  std::vector<vec3> d{vec3(0, 0, 1)};
-  const std::array<std::pair<double, int>, 3> rings{{{25, 6}, {50, 10}, {75, 14}}};
-  for (std::size_t ring = 0; ring < rings.size(); ++ring) {
-    const double theta = rings[ring].first * pi / 180;
-    const int count = rings[ring].second;
-    for (int k = 0; k < count; ++k) {
-      const double phi = 2 * pi * (k + 0.5 * (ring % 2)) / count;
-      d.push_back(vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
+// The probe directions, in a frame whose z is the normal: the centres of a 16 x 16 grid
+// of cells over the unit square, mapped to the hemisphere so that each cell carries the
+// same share of the cosine-weighted view, 1/256 (Malley's method: a point of the disc,
+// lifted). Quarter k of a leaf casts the 64 of them whose cell (a, b) has a % 2 and
+// b % 2 the bits of k: the four quarters together probe all 256.
+std::array<std::vector<vec3>, 4> probe_directions() {
+  constexpr int cells = 16;
+  std::array<std::vector<vec3>, 4> d;
+  for (int b = 0; b < cells; ++b)
+    for (int a = 0; a < cells; ++a) {
+      const double u = (a + 0.5) / cells, v = (b + 0.5) / cells;
+      const double r = std::sqrt(u), phi = 2 * pi * v;
+      d[(a % 2) + 2 * (b % 2)].push_back(vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(1 - u)));
     }
-  }
   return d;
 }
 
@@ -132,7 +132,7 @@ void rescale(const std::vector<int>& leaf, const std::vector<double>& sum, const
 }  // namespace
 
 bool sees_only_surfaces(const FormFactorScene& blockers, const Hierarchy& h, int leaf) {
-  static const std::vector<vec3> directions = probe_directions();
+  static const std::array<std::vector<vec3>, 4> directions = probe_directions();
   const Node& node = h.nodes[leaf];
   const Onb frame(node.shape.normal);
   const double size = std::sqrt(h.total_area);
@@ -149,7 +149,7 @@ bool sees_only_surfaces(const FormFactorScene& blockers, const Hierarchy& h, int
     probed = true;
     const vec3 x = lifted_point(h, node, (cell % exposure_cells + 0.5) / exposure_cells,
                                 (cell / exposure_cells + 0.5) / exposure_cells);
-    for (const vec3& d : directions) {
+    for (const vec3& d : directions[quarter]) {
       const auto hit = blockers.first_hit(Ray{x, d.x * frame.u + d.y * frame.v + d.z * frame.w, 1e-7 * size});
       if (!hit || !hit->front) return false;  // out of the scene, or onto a back, which reflects nothing
     }

@@ -60,8 +60,8 @@ struct BalancedSolve {
   double balance_seconds = 0, solve_seconds = 0;
   double change = 0;  // as RefinementRound's: how much the balanced solve moved B
 };
-// "balanced: 160 of 1506 leaves see only surfaces; their sums 69% off, 3e-13 after 19
-// sweeps (12 ms); then 23 iterations (30 ms), B moved by 2.1e-02"
+// "balanced: 140 of 1537 leaves see only surfaces; their sums 68.5% off, 3e-13 after 19
+// sweeps (289 ms); then 21 iterations (496 ms), B moved by 1.0e-02"
 std::string describe(const BalancedSolve& balanced);
 
 struct HierarchicalResult {
