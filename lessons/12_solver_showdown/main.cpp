@@ -22,6 +22,7 @@
 #include "gi/radiosity/system/float_sweep.hpp"
 #include "gi/radiosity/system/progressive.hpp"
 #include "gi/radiosity/display/surface_mask.hpp"
+#include "gi/radiosity/system/shooting_furnace.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/system/solvers.hpp"
@@ -357,6 +358,8 @@ int main(int argc, char** argv) {
     showdown(open, lesson);
     std::cout << '\n';
     stability(closed, open, meshed(gi::closed_box(1.0), 150, lesson.threads()), lesson.threads(), lesson);
+    std::cout << '\n';
+    lesson.table(gi::shooting_furnace_table(gi::shooting_furnace(150, lesson.threads())), "shooting_furnace");
     std::cout << '\n';
     precision(closed, lesson);
     if (!skip_mesh) {

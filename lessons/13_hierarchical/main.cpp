@@ -163,6 +163,7 @@ void thresholds(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
                         static_cast<long long>(r.replaced), r.iterations, 1e3 * r.refine_seconds, 1e3 * r.solve_seconds,
                         r.change});
       lesson.table(rounds, "rounds");
+      lesson.say(gi::describe(run.result.balanced));
     }
   }
   lesson.table(table, "thresholds");

@@ -85,6 +85,8 @@ RecipeResult hierarchical_recipe(const std::vector<Surface>& surfaces, const Rec
   RecipeResult result;
   for (const RefinementRound& round : run.result.rounds)
     result.form_factor_seconds += round.refine_seconds, result.solve_seconds += round.solve_seconds;
+  result.form_factor_seconds += run.result.balanced.balance_seconds;  // the links' balance is part of making them
+  result.solve_seconds += run.result.balanced.solve_seconds;
   result.direct_seconds = r.exact_direct ? std::max(0.0, timer.seconds() - result.form_factor_seconds -
                                                              result.solve_seconds)
                                          : 0.0;

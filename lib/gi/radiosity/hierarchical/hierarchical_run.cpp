@@ -29,8 +29,8 @@ SolverResult relight(HierarchicalRun& run, const std::vector<Color>& emission, d
   for (std::size_t s = 0; s < emission.size(); ++s) h.surfaces[s].emission = emission[s];
   h.largest_emission = 0;
   for (Node& node : h.nodes) {
-    node.E = node.B = emission[node.surface];
-    h.largest_emission = std::max(h.largest_emission, max_component(node.E));
+    node.source = node.B = emission[node.surface];
+    h.largest_emission = std::max(h.largest_emission, max_component(node.source));
   }
   SolverOptions options;
   options.tolerance = tolerance;
