@@ -51,7 +51,7 @@ def main(argv):
     if run(configure, problems, "configuring the kit").returncode == 0 and \
             run(["cmake", "--build", str(kit_build), "-j", "2"], problems, "building the kit").returncode == 0:
         labs = grade.labs_in(kit_dir)
-        results, lab_problems = grade.grade(kit_dir, labs, kit_build, grade.time_limit(kit_build, None), False)
+        results, lab_problems, _ = grade.grade(kit_dir, labs, kit_build, grade.time_limit(kit_build, None), False)
         problems += lab_problems
         visible = sum(1 for lab in labs for _, hidden in grade.source_tests(root, lab) if not hidden)
         passed = [r.name for r in results if r.passed]

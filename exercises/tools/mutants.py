@@ -37,6 +37,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import build    # noqa: E402
 import grade    # noqa: E402
+import gtest_run  # noqa: E402
 import regions  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -153,7 +154,7 @@ def verdict(mutant, results, problem):
                    mine[0].hint if mine else "")
 
 
-def run_round(batch, work, limit):
+def run_round(batch, work, limit, runner):
     """Verdicts on mutants of different labs, planted and built together: both cores
     compile, and each lab's tests see their own lab's bug only, since no graded test
     calls another lab's exercises. A round that does not build is run one by one."""
@@ -163,17 +164,19 @@ def run_round(batch, work, limit):
     try:
         for file, text in texts.items():
             (work / "src" / file).write_text(text)
-        error = build.build_labs(work / "build", sorted({m.lab for m in batch}))
+        error = build.build_labs(work / "build", sorted({m.lab for m in batch}), work / "src")
         if not error:
-            return [verdict(m, *grade.grade_lab(work / "build" / "bin" / f"lab{m.lab:02d}_graded", m.lab,
-                                                 grade.source_tests(work / "src", m.lab), limit, {}))
-                    for m in batch]
+            verdicts = []
+            for m in batch:
+                results, problems = grade.grade_lab(runner, work / "build", work / "src", m.lab, limit)
+                verdicts.append(verdict(m, results, "; ".join(problems)))
+            return verdicts
         if len(batch) == 1:
             return [Verdict(batch[0], [], [], "", f"does not compile: {build.first_error(error)}")]
     finally:
         for file in texts:
             shutil.copyfile(ROOT / file, work / "src" / file)  # a new mtime, so the build sees the change back
-    return [v for m in batch for v in run_round([m], work, limit)]
+    return [v for m in batch for v in run_round([m], work, limit, runner)]
 
 
 def rounds(mutants, serial):
@@ -190,7 +193,7 @@ def prepare(work, labs):
     """The copy of the tree and its build, with the reference's graded tests passing."""
     build.sync_tree(ROOT, work / "src")
     build.configure(work / "src", work / "build", quick=True)
-    error = build.build_labs(work / "build", labs)
+    error = build.build_labs(work / "build", labs, work / "src")
     if error:
         raise MutantError(f"the reference's graded tests do not build: {build.first_error(error)}")
 
@@ -222,15 +225,19 @@ def main(argv):
         return 1
     limit = grade.time_limit(work / "build", args.timeout)
     verdicts = []
-    for batch in rounds(mutants, args.serial):
-        for v in run_round(batch, work, limit):
-            verdicts.append(v)
-            status = v.problem or (f"caught by {len(v.caught_by)}" if v.caught_by else "NOT CAUGHT")
-            extra = (f"; also fails {len(v.elsewhere)} of other exercises: {', '.join(v.elsewhere[:3])}"
-                     if v.elsewhere else "")
-            print(f"[{len(verdicts)}/{len(mutants)}] {v.mutant.id:<45} {status}{extra}", flush=True)
-            if v.hint:
-                print(f"        hint: {v.hint[:160]}")
+    runner = gtest_run.Runner(hide=[ROOT, work])
+    try:
+        for batch in rounds(mutants, args.serial):
+            for v in run_round(batch, work, limit, runner):
+                verdicts.append(v)
+                status = v.problem or (f"caught by {len(v.caught_by)}" if v.caught_by else "NOT CAUGHT")
+                extra = (f"; also fails {len(v.elsewhere)} of other exercises: {', '.join(v.elsewhere[:3])}"
+                         if v.elsewhere else "")
+                print(f"[{len(verdicts)}/{len(mutants)}] {v.mutant.id:<45} {status}{extra}", flush=True)
+                if v.hint:
+                    print(f"        hint: {v.hint[:160]}")
+    finally:
+        runner.close()
     broken = [v for v in verdicts if v.problem]
     caught = [v for v in verdicts if v.caught_by]
     fraction = len(caught) / len(verdicts)
