@@ -106,7 +106,9 @@ class Reporter : public testing::EmptyTestEventListener {
 
   void OnTestEnd(const testing::TestInfo& info) override {
     const std::string left = left_behind();
-    if (!left.empty()) failures_.push_back("the test left " + left + " behind: code under test must not");
+    if (!left.empty())
+      failures_.push_back("unknown file\nthe code under test left " + left +
+                          " after the test: it must leave nothing running or changed");
     const bool ok = info.result()->Passed() && left.empty();
     std::string fields = "\"e\":\"end\",\"t\":";
     fields += json_string(name(info));
@@ -173,7 +175,7 @@ class Reporter : public testing::EmptyTestEventListener {
     for (int sig = 1; sig < NSIG; ++sig) {
       const struct sigaction &a = before_.actions[sig], &b = now.actions[sig];
       if (a.sa_handler != b.sa_handler || a.sa_flags != b.sa_flags)
-        return "a handler for signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
+        return "a handler installed for signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
     }
     for (int which : {ITIMER_REAL, ITIMER_VIRTUAL, ITIMER_PROF}) {
       itimerval timer{};

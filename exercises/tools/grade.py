@@ -171,9 +171,12 @@ def run_exercise(runner, binary, names, limit, first):
                 f"stops before its first test ({gtest_run.describe_exit(run.returncode)})"
             return {}, why
         first = False
+        progress = any(n in outcomes for n in remaining)
         remaining = [n for n in remaining if n not in outcomes]
         if not run.problem or not remaining:
             break
+        if run.culprit not in remaining and progress:
+            continue  # it stopped between tests (the harness does, after a test left something): go on
         culprit = run.culprit if run.culprit in remaining else remaining[0]
         output = "\n".join(run.output.strip().splitlines()[-20:])
         outcomes[culprit] = gtest_run.Outcome(False, run.problem, f"{run.problem}\n{output}".strip())

@@ -31,7 +31,8 @@ ROOT = Path(__file__).resolve().parents[2]
 # Kept out of kits: how the course tests its tests, grades with hidden tests, and makes kits.
 INSTRUCTOR_ONLY = ("exercises/mutants/", "exercises/autograder/", "exercises/make-kit", "exercises/tools/kit.py",
                    "exercises/tools/check_kit.py", "exercises/tools/check_autograder.py", "exercises/tools/mutants.py",
-                   "exercises/tools/submission.py",
+                   "exercises/tools/submission.py", "exercises/tools/check_harness.py", "exercises/support/harness_check.cpp",
+                   "exercises/tools/hostile.py",
                    "exercises/tools/test_")
 
 

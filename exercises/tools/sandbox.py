@@ -241,6 +241,7 @@ def kill_user(uid, deadline):
             os.setgid(uid)
             os.setuid(uid)
             while time.monotonic() < deadline:
+                os.kill(-1, signal.SIGSTOP)  # stopped, none of them can fork any more
                 os.kill(-1, signal.SIGKILL)
                 time.sleep(0.001)
         except ProcessLookupError:
