@@ -18,6 +18,7 @@ import re
 import shutil
 import signal
 import subprocess
+import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -71,14 +72,30 @@ def run(argv, cwd=None):
     return done.returncode, (done.stdout + done.stderr).decode("utf-8", errors="replace")
 
 
-def stream(argv, on_line):
-    """(status, log) of a command whose output lines are handed to on_line as they come."""
+# Minutes a build may take before it is stopped: a template or constexpr bomb in a
+# region must not hold the grader (the whole project builds in about 8 minutes).
+BUILD_DEADLINE = 30 * 60
+
+
+def stream(argv, on_line, deadline=BUILD_DEADLINE):
+    """(status, log) of a command whose output lines are handed to on_line as they come;
+    stopped (status None) at the deadline."""
     try:  # a session of its own: an interrupted grader stops the whole build, compilers included
         process = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                    start_new_session=True)
     except OSError as e:
         raise BuildError(f"cannot run {argv[0]}: {e.strerror}")
-    lines = []
+    lines, expired = [], []
+
+    def stop():
+        expired.append(True)
+        try:
+            os.killpg(process.pid, signal.SIGKILL)
+        except OSError:
+            pass
+
+    timer = threading.Timer(deadline, stop)
+    timer.start()
     try:
         for raw in process.stdout:
             line = raw.decode("utf-8", errors="replace")
@@ -91,8 +108,11 @@ def stream(argv, on_line):
             pass
         raise
     finally:
+        timer.cancel()
         process.stdout.close()
         process.wait()
+    if expired:
+        lines.append(f"\nthe build did not end within {deadline // 60} minutes: stopped\n")
     return process.returncode, "".join(lines)
 
 

@@ -122,46 +122,54 @@ def failed_all(lab, tests, hint):
     return [Result(lab, exercise_of(n, lab), n, False, hint, hint, hidden) for n, hidden in tests]
 
 
-def grade_program(runner, binary, lab, tests, limit, restubbed, hidden):
+def grade_program(runner, binary, lab, tests, limit, restubbed, hidden, together=False):
     """(results, problem) of one of a lab's programs. `tests`: [(name, hidden)] from the
-    sources, those of this program; `problem` is "" unless the program could not run."""
+    sources, those of this program; `problem` is "" unless the program could not run.
+    Each exercise's tests run in one process -- or, `together`, the whole program's
+    (the mutant suite: the course's own code, where a fault needs no more isolation)."""
     names = [n for n, _ in tests]
     if binary is None or not Path(binary).is_file():
         problem = "its test program was not built"
         return failed_all(lab, tests, problem), problem
     results, first = [], True
-    for exercise in dict.fromkeys(exercise_of(n, lab) for n in names):
-        mine = [n for n in names if exercise_of(n, lab) == exercise]
-        if exercise in restubbed:
-            why = restubbed[exercise]
-            hint = why if why.startswith("not taken") else f"your code does not compile: {why}"
-            results += [Result(lab, exercise, n, False, hint, hint, hidden) for n in mine]
+    exercises = list(dict.fromkeys(exercise_of(n, lab) for n in names))
+    stubbed = [e for e in exercises if e in restubbed]
+    for exercise in stubbed:
+        why = restubbed[exercise]
+        hint = why if why.startswith("not taken") else f"your code does not compile: {why}"
+        results += [Result(lab, exercise, n, False, hint, hint, hidden) for n in names if exercise_of(n, lab) == exercise]
+    groups = [[n for n in names if exercise_of(n, lab) not in stubbed]] if together else \
+        [[n for n in names if exercise_of(n, lab) == e] for e in exercises if e not in stubbed]
+    for group in groups:
+        if not group:
             continue
-        outcomes, problem = run_exercise(runner, binary, mine, limit, first)
+        outcomes, problem = run_exercise(runner, binary, group, limit, first, lambda n: exercise_of(n, lab))
         first = False
         if problem:
             problem = f"the lab's test program {problem}"
-            return results + failed_all(lab, [(n, hidden) for n in names if n not in {r.name for r in results}],
-                                        problem), problem
-        results += [Result(lab, exercise, n, o.passed, o.hint, o.detail, hidden) for n, o in outcomes.items()]
-    return results, ""
+            done = {r.name for r in results}
+            return results + failed_all(lab, [(n, hidden) for n in names if n not in done], problem), problem
+        results += [Result(lab, exercise_of(n, lab), n, o.passed, o.hint, o.detail, hidden) for n, o in outcomes.items()]
+    order = {n: k for k, n in enumerate(names)}
+    return sorted(results, key=lambda r: order[r.name]), ""
 
 
-def grade_lab(runner, build_dir, root, lab, limit, restubbed=None):
+def grade_lab(runner, build_dir, root, lab, limit, restubbed=None, together=False):
     """(results, problems) of one lab's programs in a built tree, visible then hidden."""
     results, problems = [], []
     for kind, name in build.lab_targets(root, lab):
         tests = [(n, h) for n, h in source_tests(root, lab) if h == (kind == "hidden")]
         found, problem = grade_program(runner, Path(build_dir) / "bin" / name, lab, tests, limit, restubbed or {},
-                                       kind == "hidden")
+                                       kind == "hidden", together)
         results += found
         problems += [problem] if problem else []
     return results, problems
 
 
-def run_exercise(runner, binary, names, limit, first):
+def run_exercise(runner, binary, names, limit, first, exercise=lambda name: ""):
     """({test: Outcome}, problem). The tests run in one process; a fault costs the test
-    in progress, and the rest run on in a new process (after a timeout: not run)."""
+    in progress, and the rest run on in a new process -- after a timeout, except the
+    rest of the culprit's exercise, which is not run (they would likely hang too)."""
     outcomes, remaining = {}, list(names)
     while remaining:
         run = runner.run_tests(binary, remaining, limit)
@@ -181,10 +189,10 @@ def run_exercise(runner, binary, names, limit, first):
         output = "\n".join(run.output.strip().splitlines()[-20:])
         outcomes[culprit] = gtest_run.Outcome(False, run.problem, f"{run.problem}\n{output}".strip())
         remaining.remove(culprit)
-        if run.returncode is None:  # a hang: the others would likely hang too
-            for n in remaining:
+        if run.returncode is None:
+            for n in [n for n in remaining if exercise(n) == exercise(culprit)]:
                 outcomes[n] = gtest_run.Outcome(False, f"not run: {culprit.split('.')[-1]} of this exercise timed out")
-            break
+                remaining.remove(n)
     return {n: outcomes[n] for n in names}, ""
 
 

@@ -29,8 +29,10 @@ replaced by the '+' lines that follow (indented like the first line found). A
 mutant may have several hunks.
 """
 import argparse
+import concurrent.futures
 import shutil
 import sys
+import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -154,29 +156,52 @@ def verdict(mutant, results, problem):
                    mine[0].hint if mine else "")
 
 
-def run_round(batch, work, limit, runner):
-    """Verdicts on mutants of different labs, planted and built together: both cores
-    compile, and each lab's tests see their own lab's bug only, since no graded test
-    calls another lab's exercises. A round that does not build is run one by one."""
+def plant(batch, work):
+    """Writes the batch's mutants into the copy of the tree; returns the files written."""
     texts = {m.file: (ROOT / m.file).read_text() for m in batch}
     for m in batch:
         texts[m.file] = apply(texts[m.file], m)
+    for file, text in texts.items():
+        (work / "src" / file).write_text(text)
+    return list(texts)
+
+
+def restore(files, work):
+    for file in files:
+        shutil.copyfile(ROOT / file, work / "src" / file)  # a new mtime, so the build sees the change back
+
+
+def build_round(batch, work, snapshots):
+    """[(mutant, folder of its lab's programs, problem)] for mutants of different labs,
+    planted and built together: each lab's tests see their own lab's bug only, since no
+    graded test calls another lab's exercises. The programs are copied out, so that the
+    next round can build while these are graded. A round that does not build is built
+    one mutant at a time."""
+    files = plant(batch, work)
     try:
-        for file, text in texts.items():
-            (work / "src" / file).write_text(text)
         error = build.build_labs(work / "build", sorted({m.lab for m in batch}), work / "src")
         if not error:
-            verdicts = []
+            built = []
             for m in batch:
-                results, problems = grade.grade_lab(runner, work / "build", work / "src", m.lab, limit)
-                verdicts.append(verdict(m, results, "; ".join(problems)))
-            return verdicts
+                folder = Path(tempfile.mkdtemp(prefix=f"lab{m.lab:02d}-", dir=snapshots))
+                (folder / "bin").mkdir()
+                for _, name in build.lab_targets(work / "src", m.lab):
+                    shutil.copy2(work / "build" / "bin" / name, folder / "bin" / name)
+                built.append((m, folder, ""))
+            return built
         if len(batch) == 1:
-            return [Verdict(batch[0], [], [], "", f"does not compile: {build.first_error(error)}")]
+            return [(batch[0], None, f"does not compile: {build.first_error(error)}")]
     finally:
-        for file in texts:
-            shutil.copyfile(ROOT / file, work / "src" / file)  # a new mtime, so the build sees the change back
-    return [v for m in batch for v in run_round([m], work, limit, runner)]
+        restore(files, work)
+    return [b for m in batch for b in build_round([m], work, snapshots)]
+
+
+def judge_mutant(mutant, folder, work, limit, runner):
+    try:
+        results, problems = grade.grade_lab(runner, folder, work / "src", mutant.lab, limit, together=True)
+        return verdict(mutant, results, "; ".join(problems))
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def rounds(mutants, serial):
@@ -225,19 +250,38 @@ def main(argv):
         return 1
     limit = grade.time_limit(work / "build", args.timeout)
     verdicts = []
-    runner = gtest_run.Runner(hide=[ROOT, work])
+
+    def say(v):
+        verdicts.append(v)
+        status = v.problem or (f"caught by {len(v.caught_by)}" if v.caught_by else "NOT CAUGHT")
+        extra = f"; also fails {len(v.elsewhere)} of other exercises: {', '.join(v.elsewhere[:3])}" if v.elsewhere else ""
+        print(f"[{len(verdicts)}/{len(mutants)}] {v.mutant.id:<45} {status}{extra}", flush=True)
+        if v.hint:
+            print(f"        hint: {v.hint[:160]}", flush=True)
+
+    # Round k is graded (two at a time) while round k + 1 compiles: the course's own
+    # code, run without the sandbox, from copies of the round's programs.
+    runner = gtest_run.Runner(isolate=False)
+    snapshots = Path(tempfile.mkdtemp(prefix="mutant-programs-"))
     try:
-        for batch in rounds(mutants, args.serial):
-            for v in run_round(batch, work, limit, runner):
-                verdicts.append(v)
-                status = v.problem or (f"caught by {len(v.caught_by)}" if v.caught_by else "NOT CAUGHT")
-                extra = (f"; also fails {len(v.elsewhere)} of other exercises: {', '.join(v.elsewhere[:3])}"
-                         if v.elsewhere else "")
-                print(f"[{len(verdicts)}/{len(mutants)}] {v.mutant.id:<45} {status}{extra}", flush=True)
-                if v.hint:
-                    print(f"        hint: {v.hint[:160]}")
+        with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+            pending = []
+            for batch in rounds(mutants, args.serial):
+                for m, folder, problem in build_round(batch, work, snapshots):
+                    if problem:
+                        say(Verdict(m, [], [], "", problem))
+                    else:
+                        pending.append(pool.submit(judge_mutant, m, folder, work, limit, runner))
+                for done in [f for f in pending if f.done()]:
+                    say(done.result())
+                    pending.remove(done)
+            for done in concurrent.futures.as_completed(pending):
+                say(done.result())
     finally:
         runner.close()
+        shutil.rmtree(snapshots, ignore_errors=True)
+    order = {m.id: k for k, m in enumerate(mutants)}
+    verdicts.sort(key=lambda v: order[v.mutant.id])
     broken = [v for v in verdicts if v.problem]
     caught = [v for v in verdicts if v.caught_by]
     fraction = len(caught) / len(verdicts)
