@@ -71,20 +71,6 @@ TEST(Ex16_2_FinalGather, AUniformRoomGivesItsRadiosity) {
   EXPECT_NEAR(H.z, 2.0, 1e-9) << "every colour channel is gathered alike";
 }
 
-TEST(Ex16_2_FinalGather, FromTheCeilingTheFloorGivesItsFormFactor) {
-  // Gathering on the ceiling (normal -y): only the floor reflects, B - E = 1, so H is
-  // the form factor from the ceiling's centre to the floor, as from the floor to the
-  // ceiling. Directions about z, or about +y, miss most of the floor.
-  const gi::RadiosityHandoff h = lab16::room_handoff(
-      lab16::room_mesh(), [](int s, const vec3&) { return constant(s == 0 ? 1 : 0); },
-      [](int, const vec3&) { return constant(0); }, [](int, const vec3&) { return constant(0); });
-  const double F = form_factor_to_ceiling();
-  const Estimate e = gather(h, 8, vec3(0.5, 1 - 1e-9, 0.5), vec3(0, -1, 0));
-  EXPECT_NEAR(e.mean, F, 5 * e.standard_error + 1e-3)
-      << "from the ceiling's centre the floor gives H = " << F << ", got " << e.mean
-      << ": the directions must be turned about the point's own normal n (here -y), e.g. Onb(n).to_world(w)";
-}
-
 TEST(Ex16_2_FinalGather, TheCeilingGivesItsFormFactor) {
   const double F = form_factor_to_ceiling();  // 0.2399
   const Estimate e = gather(ceiling_only([](const vec3&) { return 1.0; }), 8);
@@ -143,4 +129,18 @@ TEST(Ex16_2_FinalGather, RaysThatLeaveCountAsDark) {
       << "with the ceiling open, rays through it find nothing and count 0, but still count: divide by all "
          "strata^2 rays, not by the rays that hit, so H = 1 - F(point -> opening) = "
       << expected;
+}
+
+TEST(Ex16_2_FinalGather, FromTheCeilingTheFloorGivesItsFormFactor) {
+  // Gathering on the ceiling (normal -y): only the floor reflects, B - E = 1, so H is
+  // the form factor from the ceiling's centre to the floor, as from the floor to the
+  // ceiling. Directions about z, or about +y, miss most of the floor.
+  const gi::RadiosityHandoff h = lab16::room_handoff(
+      lab16::room_mesh(), [](int s, const vec3&) { return constant(s == 0 ? 1 : 0); },
+      [](int, const vec3&) { return constant(0); }, [](int, const vec3&) { return constant(0); });
+  const double F = form_factor_to_ceiling();
+  const Estimate e = gather(h, 8, vec3(0.5, 1 - 1e-9, 0.5), vec3(0, -1, 0));
+  EXPECT_NEAR(e.mean, F, 5 * e.standard_error + 1e-3)
+      << "from the ceiling's centre the floor gives H = " << F << ", got " << e.mean
+      << ": the directions must be turned about the point's own normal n (here -y), e.g. Onb(n).to_world(w)";
 }

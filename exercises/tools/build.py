@@ -16,7 +16,6 @@ import filecmp
 import os
 import re
 import shutil
-import signal
 import subprocess
 import threading
 from dataclasses import dataclass, field
@@ -24,6 +23,7 @@ from pathlib import Path
 
 import cpp_text
 import overlay
+import processes
 import regions
 
 SKIP = {"build", "out", ".git", "__pycache__"}
@@ -82,17 +82,14 @@ def stream(argv, on_line, deadline=BUILD_DEADLINE):
     stopped (status None) at the deadline."""
     try:  # a session of its own: an interrupted grader stops the whole build, compilers included
         process = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                                   start_new_session=True)
+                                   **processes.own_group())
     except OSError as e:
         raise BuildError(f"cannot run {argv[0]}: {e.strerror}")
     lines, expired = [], []
 
     def stop():
         expired.append(True)
-        try:
-            os.killpg(process.pid, signal.SIGKILL)
-        except OSError:
-            pass
+        processes.kill_group(process)
 
     timer = threading.Timer(deadline, stop)
     timer.start()
@@ -102,10 +99,7 @@ def stream(argv, on_line, deadline=BUILD_DEADLINE):
             lines.append(line)
             on_line(line.rstrip("\n"))
     except BaseException:
-        try:
-            os.killpg(process.pid, signal.SIGKILL)
-        except OSError:
-            pass
+        processes.kill_group(process)
         raise
     finally:
         timer.cancel()

@@ -322,13 +322,17 @@ def grade(root, labs, build_dir, limit, do_build, say=print, quick=False, scratc
             runner.close()
     results = [r for lab in labs for r in by_lab.get(lab, [])]
     notes = list(built.notes)
-    note = sandbox.isolation_note(runner.missing)
-    if "channel" in runner.missing:
-        notes.append("verdicts read from gtest's own report, which the code under test could forge "
-                     "(this system has no signed report)")
-    if note:
-        notes.append(f"the tests ran with {note}")
+    if missing_note(runner.missing):
+        notes.append(missing_note(runner.missing))
     return results, problems, notes
+
+
+def missing_note(missing):
+    """What this system could not give the code under test, in one line (or "")."""
+    parts = ["verdicts read from gtest's own report, which the code under test could forge "
+             "(this system has no signed report)"] if "channel" in missing else []
+    note = sandbox.isolation_note(missing)
+    return "; ".join(parts + ([f"the tests ran with {note}"] if note else []))
 
 
 def stop(signum, frame):

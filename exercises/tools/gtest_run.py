@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import processes  # noqa: E402
 import sandbox  # noqa: E402
 
 KEEP_OUTPUT = 16384         # characters of a program's output kept for messages
@@ -77,6 +78,8 @@ def describe_exit(code):
 
 def program_env(scratch):
     """The environment a test program gets: nothing of the grader's, no GTEST_* variable."""
+    if not processes.POSIX:  # Windows needs its own variables (SystemRoot, the DLLs' PATH) to start a program
+        return {k: v for k, v in os.environ.items() if not k.startswith("GTEST_")}
     env = {"PATH": "/usr/bin:/bin", "HOME": str(scratch), "TMPDIR": str(scratch), "LANG": "C.UTF-8", "TZ": "UTC"}
     env.update({k: v for k, v in os.environ.items() if k.startswith(("ASAN_", "UBSAN_", "LSAN_"))})
     return env
@@ -102,16 +105,18 @@ class Runner:
         """`isolate`=False runs the programs directly, in a process group of their own
         with the deadline but no sandbox: for the course's own code only (the mutant
         suite, the kit check), never for a student's."""
-        self.isolate = isolate
+        self.isolate = isolate and processes.POSIX  # the sandbox is POSIX (fork, rlimits, signals)
         self.base = Path(tempfile.mkdtemp(prefix="gi-grade-"))
         self.hide = [str(Path(h).resolve()) for h in hide]
         off = sandbox.switched_off()
-        self.channel = os.name == "posix" and "channel" not in off
-        self.uid = (sandbox.free_uid() if isolate and os.name == "posix" and os.geteuid() == 0 and "user" not in off
+        self.channel = processes.POSIX and "channel" not in off
+        self.uid = (sandbox.free_uid() if self.isolate and os.geteuid() == 0 and "user" not in off
                     else None)
         physical = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") if hasattr(os, "sysconf") else 0
         self.memory = min(memory, physical // 2) if memory and physical else memory
         self.missing = set() if self.channel else {"channel"}
+        if isolate and not self.isolate:
+            self.missing |= {"user", "pidns", "subreaper", "limits"}
         self.copies, self.count, self.lock = {}, 0, threading.Lock()  # runs may come from several threads
         (self.base / "bin").mkdir()
         (self.base / "reports").mkdir(mode=0o700)
@@ -151,7 +156,7 @@ class Runner:
             try:
                 process = subprocess.Popen(sandbox.command(config), stdin=subprocess.DEVNULL, stdout=out,
                                            stderr=subprocess.STDOUT, pass_fds=(*pass_fds, status_write),
-                                           start_new_session=True)
+                                           **processes.own_group())
             except OSError as e:
                 os.close(status_read), os.close(status_write)
                 return 127, f"cannot start the sandbox: {e.strerror}"
@@ -161,10 +166,7 @@ class Runner:
             except subprocess.TimeoutExpired:
                 pass
             finally:
-                try:
-                    os.killpg(process.pid, signal.SIGKILL)
-                except (ProcessLookupError, PermissionError):
-                    pass
+                processes.kill_group(process)
                 process.wait()
             with os.fdopen(status_read, "rb") as r:
                 text = r.read(65536)
@@ -182,8 +184,8 @@ class Runner:
         with tempfile.TemporaryFile() as out:
             try:
                 process = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.STDOUT,
-                                           pass_fds=pass_fds, start_new_session=True, cwd=scratch,
-                                           env=program_env(scratch))
+                                           pass_fds=pass_fds, cwd=scratch, env=program_env(scratch),
+                                           **processes.own_group())
             except OSError as e:
                 return 127, f"cannot start {argv[0]}: {e.strerror}"
             try:
@@ -191,10 +193,7 @@ class Runner:
             except subprocess.TimeoutExpired:
                 code = None
             finally:
-                try:
-                    os.killpg(process.pid, signal.SIGKILL)
-                except (ProcessLookupError, PermissionError):
-                    pass
+                processes.kill_group(process)
                 process.wait()
             return code, tail(out)
 

@@ -35,7 +35,6 @@ off, so that the fallbacks can be tested on a system where everything works.
 """
 import json
 import os
-import resource
 import signal
 import sys
 import time
@@ -135,6 +134,7 @@ def cover(lib, folders, missing):
 def set_limits(config, missing):
     if "limits" in switched_off():
         return
+    import resource  # POSIX only, as the rest of the sandbox's own process
     limits = [(resource.RLIMIT_FSIZE, MAX_FILE), (resource.RLIMIT_CORE, 0), (resource.RLIMIT_NOFILE, MAX_OPEN_FILES)]
     if config.get("memory"):
         limits.append((getattr(resource, "RLIMIT_DATA", resource.RLIMIT_AS), config["memory"]))

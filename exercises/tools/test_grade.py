@@ -20,6 +20,7 @@ from unittest import mock
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import grade      # noqa: E402
 import gtest_run  # noqa: E402
+import processes  # noqa: E402
 import sandbox    # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -261,6 +262,31 @@ class FakePrograms(unittest.TestCase):
             found, problem, missing = results_of(report_writer, {"Ex99_1_A.Good": "pass"})
         self.assertTrue(found["Ex99_1_A.Good"].passed)
         self.assertIn("channel", missing)
+
+    def test_without_posix_it_still_grades_and_says_so_in_one_line(self):
+        """As on Windows (forced here): no sandbox, no descriptors to pass, no process
+        groups; gtest's JSON report is read, the program is killed on its own."""
+        writer = Path(self.folder) / "lab99_graded"
+        writer.write_text("#!/usr/bin/env python3\nimport json, sys, time\n"
+                          "out = next(a for a in sys.argv if a.startswith('--gtest_output=json:'))[20:]\n"
+                          "json.dump({'testsuites': [{'name': 'Ex99_1_A', 'testsuite': [{'name': 'Good', "
+                          "'status': 'RUN', 'result': 'COMPLETED'}, {'name': 'Bad', 'status': 'RUN', "
+                          "'failures': [{'failure': 'a.cpp:1\\nFailed\\nthe far root'}]}]}]}, open(out, 'w'))\n"
+                          "if 'Hang' in ' '.join(sys.argv): time.sleep(600)\n")
+        writer.chmod(0o755)
+        start = time.monotonic()
+        with mock.patch.object(processes, "POSIX", False):
+            found, problem, missing = results_of(writer, {"Ex99_1_A.Good": "", "Ex99_1_A.Bad": "", "Ex99_1_A.Hang": ""},
+                                                 limit=1.0)
+        self.assertLess(time.monotonic() - start, 20, "the deadline holds without process groups")
+        self.assertTrue(found["Ex99_1_A.Good"].passed)
+        self.assertEqual(found["Ex99_1_A.Bad"].hint, "the far root")
+        self.assertIn("timed out", found["Ex99_1_A.Hang"].hint)
+        self.assertTrue({"channel", "user", "pidns", "subreaper", "limits"} <= missing, missing)
+        note = grade.missing_note(missing)
+        self.assertEqual(len(note.splitlines()), 1, note)
+        self.assertIn("could forge", note)
+        self.assertIn("no resource limits", note)
 
     def test_a_missing_program_costs_its_lab(self):
         found, problem, _ = results_of(Path(self.folder) / "nothing", {"Ex99_1_A.One": "pass"})
