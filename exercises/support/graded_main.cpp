@@ -3,8 +3,8 @@
 //
 // Run by a student (`build/release/bin/lab01_graded`) or by ctest, it is plain gtest.
 // Run by the grader, it gets two descriptors: `--gi_key=FD`, a pipe holding a key of
-// 32 random bytes, read and closed before any test runs, and `--gi_report=FD`, where
-// it writes one line per event, `<HMAC-SHA256 of the payload, hex> <payload>`:
+// 32 random bytes, and `--gi_report=FD`, a file open for appending only, where it
+// writes one line per event, `<HMAC-SHA256 of the payload, hex> <payload>`:
 //     {"n":0,"e":"start","t":"Ex1_1_RaySphere.HitsFromOutside"}
 //     {"n":1,"e":"end","t":"Ex1_1_RaySphere.HitsFromOutside","ok":false,"skip":false,"fail":["sphere_test.cpp:12\n..."]}
 //     ...  {"n":40,"e":"done"}
@@ -12,6 +12,30 @@
 // "end" line with "ok":true. What the code under test prints, a report file it
 // writes, an exit status, a line it writes into every descriptor it finds: none of
 // it is signed, so none of it counts.
+//
+// The key is where a forger would look, so it is kept in one place, out of reach of
+// everything but this process's own code:
+// - it is read, and its pipe closed, by the program's very first code (from
+//   .preinit_array on ELF systems with glibc: before any constructor, so before any
+//   code of the course or of a submission could read the pipe; elsewhere first thing
+//   in main, and exercise regions, function bodies only, run only when a test calls
+//   them); it lives in one static buffer for the whole run (each verdict is signed
+//   after the code under test ran, so it cannot be wiped before), and HMAC overwrites
+//   its own buffers made from it (the padded key, the hash states) before returning;
+// - the program then makes itself non-dumpable (Linux): no other process -- a child
+//   the code under test starts, a shell, a debugger -- may ptrace it or read its
+//   memory, and it cannot open its own /proc/self/mem (the sandbox's seccomp filter
+//   also refuses ptrace and making the program dumpable again);
+// - a copy of the process made by fork never signs (it is not the process the key was
+//   given to), and the report cannot be read back, so there is no signed line to try
+//   a guessed key against.
+// What remains: code under test runs in this process, and an exercise function that
+// reads or overwrites the harness's memory with pointers while it runs could sign a
+// pass (a process may always read its own symbol table and memory map, so the key's
+// address is not secret); so could a child it forks, which holds a copy of the key, if
+// it computed the signature itself. A program run as root outside the sandbox is open
+// to other root processes. exercises/README.md (the threat model) says why no harness
+// in the same process can prevent that.
 //
 // After each test the harness checks that the code left nothing running that could
 // act later: no thread, no child process, no signal handler or timer, no replaced
@@ -27,8 +51,8 @@
 #include <cstring>
 #include <exception>
 #include <new>
-#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "support/hmac.hpp"
@@ -37,6 +61,9 @@
 #define GI_GRADED_POSIX 1
 #include <fcntl.h>
 #include <signal.h>
+#if defined(__linux__)
+#include <sys/prctl.h>
+#endif
 #include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -70,6 +97,54 @@ std::string json_string(const std::string& text) {
 
 #ifdef GI_GRADED_POSIX
 
+// The value of a flag --gi_NAME=FD, or -1.
+int descriptor(int argc, char** argv, const char* flag) {
+  const std::size_t length = std::strlen(flag);
+  for (int k = 1; k < argc && argv[k]; ++k)
+    if (std::strncmp(argv[k], flag, length) == 0) return std::atoi(argv[k] + length);
+  return -1;
+}
+
+// The grader's key: static storage, so no constructor runs to make it.
+struct Key {
+  char bytes[32];
+  bool given;  // the command line names a key descriptor
+  bool read;   // all 32 bytes came
+  bool sealed;  // the process's memory closed to others (Linux)
+};
+Key the_key;
+
+// Reads the key and closes its pipe, then closes the process's memory to others.
+void read_key(int argc, char** argv, char**) {
+  const int fd = descriptor(argc, argv, "--gi_key=");
+  if (fd < 0 || the_key.given) return;
+  the_key.given = true;
+  std::size_t got = 0;
+  while (got < sizeof the_key.bytes) {
+    const ssize_t n = ::read(fd, the_key.bytes + got, sizeof the_key.bytes - got);
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  the_key.read = got == sizeof the_key.bytes;
+#if defined(__linux__)
+  the_key.sealed = ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0) == 0;  // no ptrace, no /proc/PID/mem, by anyone but root
+#endif
+}
+
+#if defined(__ELF__) && defined(__GLIBC__)
+// glibc calls these with (argc, argv, envp) before the program's constructors.
+[[gnu::used, gnu::section(".preinit_array")]] void (*read_key_before_any_constructor)(int, char**, char**) = read_key;
+#endif
+
+bool dumpable() {
+#if defined(__linux__)
+  return the_key.sealed && ::prctl(PR_GET_DUMPABLE, 0, 0, 0, 0) != 0;
+#else
+  return false;
+#endif
+}
+
 // What a test must leave as it found it: taken before each test, compared after.
 struct ProcessState {
   struct sigaction actions[NSIG] = {};
@@ -81,9 +156,7 @@ struct ProcessState {
 
 class Reporter : public testing::EmptyTestEventListener {
  public:
-  Reporter(std::string key, int report_fd) : key_(std::move(key)), fd_(report_fd) {
-    stat_fd_ = ::open("/proc/self/stat", O_RDONLY | O_CLOEXEC);  // Linux: the thread count
-  }
+  Reporter(std::string_view key, int report_fd) : key_(key), fd_(report_fd), signer_(::getpid()) {}
 
   void OnTestStart(const testing::TestInfo& info) override {
     failures_.clear();
@@ -134,6 +207,7 @@ class Reporter : public testing::EmptyTestEventListener {
   }
 
   void write_record(const std::string& fields) {
+    if (::getpid() != signer_) ::_exit(6);  // a copy made by fork in the code under test: it never signs
     const std::string payload = "{\"n\":" + std::to_string(sequence_++) + "," + fields + "}";
     const std::string line = support::hex(support::hmac_sha256(key_, payload)) + " " + payload + "\n";
     for (std::size_t done = 0; done < line.size();) {
@@ -143,15 +217,23 @@ class Reporter : public testing::EmptyTestEventListener {
     }
   }
 
-  int threads() const {
-    if (stat_fd_ < 0) return 0;
+  // The process's thread count (Linux: /proc/self/stat, opened afresh each time, so
+  // that closing a descriptor cannot hide a thread); -1 when it cannot be read.
+  static int threads() {
+#if defined(__linux__)
+    const int fd = ::open("/proc/self/stat", O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return -1;
     char text[1024];
-    const ssize_t got = ::pread(stat_fd_, text, sizeof text - 1, 0);
-    if (got <= 0) return 0;
+    const ssize_t got = ::read(fd, text, sizeof text - 1);
+    ::close(fd);
+    if (got <= 0) return -1;
     text[got] = '\0';
     const char* field = std::strrchr(text, ')');  // after "pid (name)": state, then 16 fields, then threads
     for (int k = 0; field && k < 18; ++k) field = std::strchr(field + 1, ' ');
-    return field ? std::atoi(field + 1) : 0;
+    return field ? std::atoi(field + 1) : -1;
+#else
+    return 0;  // no thread count here: the check is Linux's
+#endif
   }
 
   ProcessState snapshot() const {
@@ -164,19 +246,32 @@ class Reporter : public testing::EmptyTestEventListener {
     return s;
   }
 
+  // The same disposition: the same handler and, for a function, the same flags that
+  // change how it is called. (The C library adds flags of its own to every action it
+  // sets -- std::system puts SIGINT's default back with one -- which change nothing.)
+  static bool same_action(const struct sigaction& a, const struct sigaction& b) {
+    if (a.sa_handler != b.sa_handler) return false;
+    if (a.sa_handler == SIG_DFL || a.sa_handler == SIG_IGN) return true;
+    const int meaning = SA_SIGINFO | SA_ONSTACK | SA_RESTART | SA_NODEFER | SA_RESETHAND | SA_NOCLDSTOP | SA_NOCLDWAIT;
+    return (a.sa_flags & meaning) == (b.sa_flags & meaning);
+  }
+
   // What the test left that was not there before it ran, or "".
   std::string left_behind() const {
     const ProcessState now = snapshot();
-    for (int wait = 0; now.threads > before_.threads && wait < 50 && threads() > before_.threads; ++wait)
+    int count = now.threads;
+    for (int wait = 0; count > before_.threads && wait < 50; ++wait) {
       ::usleep(4000);  // a thread just joined may take a moment to leave the count
-    if (threads() > before_.threads) return "a thread running";
+      count = threads();
+    }
+    if (count < 0 || before_.threads < 0) return "its threads uncountable (/proc/self/stat could not be read)";
+    if (count > before_.threads) return "a thread running";
+    if (dumpable()) return "its memory open to other processes (the program made dumpable again)";
     siginfo_t child{};
     if (::waitid(P_ALL, 0, &child, WEXITED | WNOHANG | WNOWAIT) == 0) return "a child process";
-    for (int sig = 1; sig < NSIG; ++sig) {
-      const struct sigaction &a = before_.actions[sig], &b = now.actions[sig];
-      if (a.sa_handler != b.sa_handler || a.sa_flags != b.sa_flags)
+    for (int sig = 1; sig < NSIG; ++sig)
+      if (!same_action(before_.actions[sig], now.actions[sig]))
         return "a handler installed for signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
-    }
     for (int which : {ITIMER_REAL, ITIMER_VIRTUAL, ITIMER_PROF}) {
       itimerval timer{};
       if (::getitimer(which, &timer) == 0 && (timer.it_value.tv_sec || timer.it_value.tv_usec))
@@ -188,48 +283,31 @@ class Reporter : public testing::EmptyTestEventListener {
     return "";
   }
 
-  std::string key_;
+  std::string_view key_;
   int fd_;
-  int stat_fd_ = -1;
+  pid_t signer_;  // the process the grader gave the key to
   long sequence_ = 0;
   ProcessState before_;
   std::vector<std::string> failures_;
 };
-
-// The value of a flag --gi_NAME=FD, or -1.
-int descriptor(int argc, char** argv, const char* flag) {
-  const std::size_t length = std::strlen(flag);
-  for (int k = 1; k < argc; ++k)
-    if (std::strncmp(argv[k], flag, length) == 0) return std::atoi(argv[k] + length);
-  return -1;
-}
-
-std::optional<std::string> read_key(int fd) {
-  std::string key(32, '\0');
-  for (std::size_t got = 0; got < key.size();) {
-    const ssize_t n = ::read(fd, key.data() + got, key.size() - got);
-    if (n <= 0) return std::nullopt;
-    got += static_cast<std::size_t>(n);
-  }
-  ::close(fd);
-  return key;
-}
 
 #endif  // GI_GRADED_POSIX
 
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef GI_GRADED_POSIX
+  read_key(argc, argv, nullptr);  // where no .preinit_array ran it (it does nothing a second time)
+#endif
   testing::InitGoogleTest(&argc, argv);
 #ifdef GI_GRADED_POSIX
-  const int key_fd = descriptor(argc, argv, "--gi_key="), report_fd = descriptor(argc, argv, "--gi_report=");
-  if (key_fd >= 0 || report_fd >= 0) {
-    const std::optional<std::string> key = key_fd >= 0 ? read_key(key_fd) : std::nullopt;
-    if (!key || report_fd < 0) {
+  const int report_fd = descriptor(argc, argv, "--gi_report=");
+  if (the_key.given || report_fd >= 0) {
+    if (!the_key.read || report_fd < 0) {
       std::fprintf(stderr, "graded tests: --gi_key and --gi_report name the grader's descriptors\n");
       return 2;
     }
-    auto* reporter = new Reporter(*key, report_fd);
+    auto* reporter = new Reporter(std::string_view(the_key.bytes, sizeof the_key.bytes), report_fd);
     testing::UnitTest::GetInstance()->listeners().Append(reporter);
     [[maybe_unused]] const int failed = RUN_ALL_TESTS();  // the verdicts are in the report
     reporter->finish(0);

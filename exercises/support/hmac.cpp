@@ -1,6 +1,6 @@
 #include "support/hmac.hpp"
 
-#include <vector>
+#include <cstddef>
 
 namespace support {
 namespace {
@@ -17,6 +17,14 @@ constexpr std::uint32_t round_constants[64] = {
     0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
 
 constexpr std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
+
+// Overwrites memory that held key material, in a way the compiler may not leave out:
+// a block freed or a stack frame left must not hand the key to code that allocates
+// or declares the same memory next (an uninitialised read in the code under test).
+void wipe(void* memory, std::size_t size) {
+  volatile std::uint8_t* bytes = static_cast<volatile std::uint8_t*>(memory);
+  for (std::size_t k = 0; k < size; ++k) bytes[k] = 0;
+}
 
 // One 64-byte block into the state h (FIPS 180-4, section 6.2.2).
 void compress(std::uint32_t h[8], const std::uint8_t* block) {
@@ -36,37 +44,74 @@ void compress(std::uint32_t h[8], const std::uint8_t* block) {
     k = g, g = f, f = e, e = d + t1, d = c, c = b, b = a, a = t1 + t2;
   }
   h[0] += a, h[1] += b, h[2] += c, h[3] += d, h[4] += e, h[5] += f, h[6] += g, h[7] += k;
+  wipe(w, sizeof w);
 }
+
+// SHA-256 fed piece by piece, so that HMAC never copies the key into a string of its own.
+class Sha256 {
+ public:
+  ~Sha256() { wipe(h_, sizeof h_), wipe(block_, sizeof block_); }
+
+  void add(const std::uint8_t* data, std::size_t size) {
+    length_ += size;
+    for (std::size_t k = 0; k < size; ++k) {
+      block_[used_++] = data[k];
+      if (used_ == 64) compress(h_, block_), used_ = 0;
+    }
+  }
+  void add(std::string_view text) { add(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()); }
+
+  // The message, a 1 bit, zeros to 56 mod 64 bytes, and its length in bits (big-endian).
+  Digest finish() {
+    const std::uint64_t bits = length_ * 8;
+    const std::uint8_t one = 0x80, zero = 0;
+    add(&one, 1);
+    while (used_ != 56) add(&zero, 1);
+    for (int k = 7; k >= 0; --k) {
+      const std::uint8_t byte = std::uint8_t(bits >> (8 * k));
+      add(&byte, 1);
+    }
+    Digest digest;
+    for (int k = 0; k < 32; ++k) digest[k] = std::uint8_t(h_[k / 4] >> (24 - 8 * (k % 4)));
+    return digest;
+  }
+
+ private:
+  // The first 32 bits of the fractional parts of the square roots of the first 8 primes.
+  std::uint32_t h_[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
+  std::uint8_t block_[64] = {};
+  std::size_t used_ = 0;
+  std::uint64_t length_ = 0;
+};
 
 }  // namespace
 
 Digest sha256(std::string_view message) {
-  // The first 32 bits of the fractional parts of the square roots of the first 8 primes.
-  std::uint32_t h[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
-  // The message, a 1 bit, zeros to 56 mod 64 bytes, and its length in bits (big-endian).
-  std::vector<std::uint8_t> padded(message.begin(), message.end());
-  padded.push_back(0x80);
-  while (padded.size() % 64 != 56) padded.push_back(0);
-  const std::uint64_t bits = std::uint64_t(message.size()) * 8;
-  for (int k = 7; k >= 0; --k) padded.push_back(std::uint8_t(bits >> (8 * k)));
-  for (std::size_t at = 0; at < padded.size(); at += 64) compress(h, padded.data() + at);
-  Digest digest;
-  for (int k = 0; k < 32; ++k) digest[k] = std::uint8_t(h[k / 4] >> (24 - 8 * (k % 4)));
-  return digest;
+  Sha256 hash;
+  hash.add(message);
+  return hash.finish();
 }
 
 Digest hmac_sha256(std::string_view key, std::string_view message) {
-  std::string padded_key(64, '\0');
+  std::uint8_t padded[64] = {};  // K', wiped below with everything made from it
   if (key.size() > 64) {
-    const Digest hashed = sha256(key);
-    padded_key.replace(0, 32, reinterpret_cast<const char*>(hashed.data()), 32);
+    Digest hashed = sha256(key);
+    for (int k = 0; k < 32; ++k) padded[k] = hashed[k];
+    wipe(hashed.data(), hashed.size());
   } else {
-    padded_key.replace(0, key.size(), key);
+    for (std::size_t k = 0; k < key.size(); ++k) padded[k] = std::uint8_t(key[k]);
   }
-  std::string inner(64, '\0'), outer(64, '\0');
-  for (int k = 0; k < 64; ++k) inner[k] = char(padded_key[k] ^ 0x36), outer[k] = char(padded_key[k] ^ 0x5c);
-  const Digest inner_hash = sha256(inner + std::string(message));
-  return sha256(outer + std::string(reinterpret_cast<const char*>(inner_hash.data()), 32));
+  std::uint8_t pad[64];
+  Sha256 inner, outer;
+  for (int k = 0; k < 64; ++k) pad[k] = padded[k] ^ 0x36;
+  inner.add(pad, 64);
+  inner.add(message);
+  Digest inner_hash = inner.finish();
+  for (int k = 0; k < 64; ++k) pad[k] = padded[k] ^ 0x5c;
+  outer.add(pad, 64);
+  outer.add(inner_hash.data(), inner_hash.size());
+  wipe(padded, sizeof padded), wipe(pad, sizeof pad), wipe(inner_hash.data(), inner_hash.size());
+  return outer.finish();
 }
 
 std::string hex(const Digest& digest) {

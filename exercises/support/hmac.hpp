@@ -3,7 +3,9 @@
 // each verdict they report to the grader with a key only the grader and the test
 // program's own harness hold (see graded_main.cpp), so that text written by the code
 // under test -- to a file, to stdout, to every open descriptor -- is never taken for
-// a verdict.
+// a verdict. The buffers a call makes from the key -- the padded key, the padded
+// blocks, the hash states, the message schedule -- are overwritten before it returns
+// (what the compiler keeps in registers or spills for a moment is beyond C++'s reach).
 #include <array>
 #include <cstdint>
 #include <string>

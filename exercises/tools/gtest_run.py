@@ -215,16 +215,19 @@ class Runner:
         key_read, key_write = os.pipe()
         os.write(key_write, key)
         os.close(key_write)
+        # The program may only append to its report: it cannot read a signed line back
+        # (to try a guessed key against it) nor write over one.
         report_path = self.base / "reports" / scratch.name
-        with open(report_path, "w+b") as report:
-            argv = [str(program), "--gtest_filter=" + ":".join(names), "--gtest_color=no",
-                    f"--gi_key={key_read}", f"--gi_report={report.fileno()}"]
-            try:
-                code, output = self.launch(argv, timeout, (key_read, report.fileno()), scratch)
-            finally:
-                os.close(key_read)
-            report.seek(0)
-            lines = report.read(MAX_REPORT).decode("ascii", errors="replace").splitlines()
+        report = os.open(report_path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_APPEND, 0o600)
+        argv = [str(program), "--gtest_filter=" + ":".join(names), "--gtest_color=no",
+                f"--gi_key={key_read}", f"--gi_report={report}"]
+        try:
+            code, output = self.launch(argv, timeout, (key_read, report), scratch)
+        finally:
+            os.close(key_read)
+            os.close(report)
+        with open(report_path, "rb") as signed:
+            lines = signed.read(MAX_REPORT).decode("ascii", errors="replace").splitlines()
         report_path.unlink(missing_ok=True)
         shutil.rmtree(scratch, ignore_errors=True)
         return judge(lines, key, names, code, output, timeout)

@@ -141,6 +141,26 @@ std::optional<Hit> never_called(const Ray& ray, const Plane& plane) {
   return std::nullopt;
 '''
 ASM = '  asm volatile("" ::: "memory");\n  (void)ray, (void)sphere;\n  return std::nullopt;\n'
+# Put before the reference of 1.1: it answers right only if every way to the signing key
+# is shut, so a way found open costs the points the check counts.
+KEY_HUNT = r'''
+  static const bool shut = [] {
+    bool all = true;
+    if (std::FILE* mem = std::fopen("/proc/self/mem", "rb")) all = false, std::fclose(mem);
+    // a child (the shell std::system starts) opens its parent's memory: the test program's
+    if (std::system("exec 2>/dev/null; read -r p c s pp r < /proc/self/stat; exec 3< /proc/$pp/mem") == 0)
+      all = false;
+    char args[8192] = {};
+    std::FILE* cmd = std::fopen("/proc/self/cmdline", "rb");
+    const std::size_t got = cmd ? std::fread(args, 1, sizeof args - 1, cmd) : 0;
+    if (cmd) std::fclose(cmd);
+    for (std::size_t k = 0; k < got; k += std::string(args + k).size() + 1)
+      if (std::string(args + k).rfind("--gi_report=", 0) == 0 && fdopen(std::atoi(args + k + 12), "r"))
+        all = false;  // the signed report read back: a guessed key could be tried against its lines
+    return all;
+  }();
+  if (!shut) return std::nullopt;
+'''
 
 
 @dataclass
@@ -154,6 +174,7 @@ class Case:
     fallback: bool = False             # graded again with the namespaces switched off
     needs: str = ""                    # "limits" or "user": only where the sandbox has them
     note: str = ""                     # a word the notes must carry
+    prefix: str = ""                   # put before the reference body of 1.1
 
 
 CASES = [
@@ -175,6 +196,9 @@ CASES = [
          earns={"1.1": 0, "1.2": 0}, needs="limits"),
     Case("fork-bomb", "a fork bomb in 1.1; 1.2 is right and must still earn its points", sphere=FORK_BOMB,
          earns={"1.1": 0, "1.2": "all"}, needs="user", fallback=True),
+    Case("key-hunt", "1.1 opens its own memory, its parent's from a child, and the signed report for reading, "
+         "and answers right only if all three are refused", prefix=KEY_HUNT, earns={"1.1": "all", "1.2": "all"},
+         fallback=True),
 ]
 
 
@@ -190,6 +214,8 @@ def make_submission(folder, case, values):
     for r in [r for r in regions.find_regions(ROOT) if r.lab == 1]:
         text = (ROOT / r.path).read_text()
         body = case.sphere if r.id == "1.1" else case.plane
+        if r.id == "1.1" and case.prefix:
+            body = case.prefix + "".join(regions.body(ROOT, r))
         if body is not None:
             lines = text.splitlines(keepends=True)
             lines[r.begin + 1:r.end] = [fill(body, values).lstrip("\n")]
@@ -261,6 +287,17 @@ def check_results(case, data, label, tests, ag, work, secrets, problems, notes_w
         expect(notes_word in data["output"], f"the notes do not say '{notes_word}'")
 
 
+def unpack(archive, folder):
+    """The zip unpacked as Gradescope's unzip does it, with each file's mode (scripts
+    stay executable; Python's extractall drops the modes)."""
+    with zipfile.ZipFile(archive) as z:
+        z.extractall(folder)
+        for info in z.infolist():
+            mode = (info.external_attr >> 16) & 0o777
+            if mode and not info.is_dir():
+                os.chmod(folder / info.filename, mode)
+
+
 def autograde(ag, work, submission_folder, env_extra):
     if (ag / "submission").exists():
         shutil.rmtree(ag / "submission")
@@ -282,9 +319,7 @@ def main(argv):
         tmp = Path(tmp)
         ag = tmp / "ag"
         submission.make_zip(tmp / "autograder.zip", [1], "after_published")
-        with zipfile.ZipFile(tmp / "autograder.zip") as z:
-            z.extractall(ag / "source")
-        os.chmod(ag / "source" / "run_autograder", 0o755)
+        unpack(tmp / "autograder.zip", ag / "source")
         values = {"ROOT": str(ag / "source"), "WORK": str(work), "RESULTS": str(ag / "results" / "results.json"),
                   "CANARY": CANARY}
         secrets = secrets_of(ag / "source")
@@ -320,9 +355,7 @@ def main(argv):
                 if fingerprint(ag / "source") != before:
                     problems.append(f"{label}: the autograder's tree was changed")
                     shutil.rmtree(ag / "source")
-                    with zipfile.ZipFile(tmp / "autograder.zip") as z:
-                        z.extractall(ag / "source")
-                    os.chmod(ag / "source" / "run_autograder", 0o755)
+                    unpack(tmp / "autograder.zip", ag / "source")
                 scores = {e: sum(t["score"] for t in data["tests"] if t["number"] == e) for e in ("1.1", "1.2")}
                 print(f"{label}: {case.why}: scored 1.1 = {scores['1.1']}, 1.2 = {scores['1.2']} "
                       f"({seconds:.0f} s)", flush=True)

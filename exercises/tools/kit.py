@@ -244,11 +244,11 @@ def main(argv):
     except (KitError, regions.RegionError) as e:
         print(f"make-kit: error: {e}", file=sys.stderr)
         return 2 if isinstance(e, UsageError) else 1
-    except (KeyboardInterrupt, Interrupted) as e:
+    except (KeyboardInterrupt, Interrupted):
         for name in signals_held.NAMES:
             if hasattr(signal, name):
                 signal.signal(getattr(signal, name), signal.SIG_IGN)
-        print(f"make-kit: interrupted ({e or 'SIGINT'}); no kit was made", file=sys.stderr)
+        print("make-kit: interrupted; no kit was made", file=sys.stderr)
         return 130
     for lab in sorted({r.lab for r in punched}):
         ids = ", ".join(r.id for r in punched if r.lab == lab)

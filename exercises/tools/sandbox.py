@@ -23,6 +23,11 @@ allows (each one tried, and said so when missing; see isolation_note):
             process, which kills them all when the program ends;
   limits    memory (data segment), processes, file size (64 MB), open files, no core
             files; and no new privileges (set-user-ID programs do not elevate);
+  seccomp   a filter on the program and all it starts (Linux, x86-64 and ARM64):
+            ptrace, process_vm_readv/writev and making a process dumpable again
+            fail with EPERM, as does every system call of another ABI (x32, i386),
+            so that nothing can read the harness's memory from outside, and the
+            harness's own non-dumpable flag (support/graded_main.cpp) stays set;
   group     the program's process group is killed at the end, on any POSIX system.
 
 The wall-time limit is enforced here: at the deadline the program (and everything it
@@ -30,17 +35,18 @@ started) is killed. The status goes to the grader on a descriptor of its own, as
 JSON object: {"returncode": code, -signal or null on timeout, "timed_out": bool,
 "missing": [layers not available]}.
 
-GI_SANDBOX_OFF=user,pidns,userns,mount,subreaper,limits (or "all") switches layers
+GI_SANDBOX_OFF=user,pidns,userns,mount,subreaper,limits,seccomp (or "all") switches layers
 off, so that the fallbacks can be tested on a system where everything works.
 """
 import json
 import os
+import platform
 import signal
 import sys
 import time
 from pathlib import Path
 
-LAYERS = ("user", "pidns", "userns", "mount", "subreaper", "limits")
+LAYERS = ("user", "pidns", "userns", "mount", "subreaper", "limits", "seccomp")
 MAX_FILE = 64 << 20      # bytes any file the program writes may reach
 MAX_PROCESSES = 256      # threads count too: parallel_for starts one per core
 MAX_OPEN_FILES = 256
@@ -48,7 +54,8 @@ MAX_OPEN_FILES = 256
 CLONE_NEWNS, CLONE_NEWUTS, CLONE_NEWIPC = 0x00020000, 0x04000000, 0x08000000
 CLONE_NEWUSER, CLONE_NEWPID, CLONE_NEWNET = 0x10000000, 0x20000000, 0x40000000
 MS_NOSUID, MS_NODEV, MS_NOEXEC, MS_REC, MS_PRIVATE = 2, 4, 8, 1 << 14, 1 << 18
-PR_SET_PDEATHSIG, PR_SET_CHILD_SUBREAPER, PR_SET_NO_NEW_PRIVS = 1, 36, 38
+PR_SET_PDEATHSIG, PR_SET_DUMPABLE, PR_SET_SECCOMP, PR_SET_CHILD_SUBREAPER, PR_SET_NO_NEW_PRIVS = 1, 4, 22, 36, 38
+SECCOMP_MODE_FILTER = 2
 
 
 def switched_off():
@@ -93,17 +100,17 @@ def free_uid():
 # ---- inside the sandbox -------------------------------------------------------------
 
 def enter_namespaces(lib, config, missing):
-    """(in a PID namespace, in a mount namespace)."""
+    """(in a PID namespace, in a mount namespace, in a user namespace of our own)."""
     off = switched_off()
     if lib is None or "pidns" in off:
         missing.append("pidns")
-        return False, False
+        return False, False, False
     flags = CLONE_NEWPID | CLONE_NEWNET | CLONE_NEWIPC | CLONE_NEWUTS
     mount_wanted = bool(config.get("hide")) and "mount" not in off
     if mount_wanted:
         flags |= CLONE_NEWNS
     if os.geteuid() == 0 and call(lib, "unshare", flags):
-        return True, mount_wanted
+        return True, mount_wanted, False
     if "userns" not in off:
         uid, gid = os.geteuid(), os.getegid()
         if call(lib, "unshare", CLONE_NEWUSER | flags):
@@ -111,11 +118,11 @@ def enter_namespaces(lib, config, missing):
                 Path("/proc/self/setgroups").write_text("deny")
                 Path("/proc/self/uid_map").write_text(f"0 {uid} 1")
                 Path("/proc/self/gid_map").write_text(f"0 {gid} 1")
-                return True, mount_wanted
+                return True, mount_wanted, True
             except OSError:
                 pass
     missing.append("pidns")
-    return False, False
+    return False, False, False
 
 
 def cover(lib, folders, missing):
@@ -149,8 +156,9 @@ def set_limits(config, missing):
             missing.append("limits")
 
 
-def become_program(lib, config, in_userns_mounts):
-    """In the child that becomes the program: limits, user, then exec. Never returns."""
+def become_program(lib, config, in_userns, said):
+    """In the child that becomes the program: limits, user, filter, then exec. Never
+    returns. What it could not set up goes to the descriptor `said` (closed by exec)."""
     try:
         os.setpgid(0, 0)
         missing = []
@@ -160,9 +168,10 @@ def become_program(lib, config, in_userns_mounts):
             os.setgroups([])
             os.setgid(uid)
             os.setuid(uid)
-        elif in_userns_mounts and lib is not None:
-            # Inside a user namespace we are its root and could uncover the covered
-            # folders again: a second user namespace, where we are no one, locks them.
+        elif in_userns and lib is not None:
+            # Inside a user namespace we are its root: we could uncover the covered
+            # folders again, and the program, owning its /proc files, could open its
+            # own memory. A second user namespace, where we are no one, takes that away.
             outer = os.geteuid()
             if call(lib, "unshare", CLONE_NEWUSER | CLONE_NEWNS):
                 Path("/proc/self/setgroups").write_text("deny")
@@ -171,11 +180,78 @@ def become_program(lib, config, in_userns_mounts):
         if lib is not None:
             call(lib, "prctl", PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0)
             call(lib, "prctl", PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        deny_tracing(lib, missing)
+        os.write(said, json.dumps(sorted(set(missing))).encode())
         os.chdir(config["scratch"])
         os.execve(config["argv"][0], config["argv"], config["env"])
     except BaseException as e:  # noqa: B902 -- nothing may escape a forked child
         os.write(2, f"sandbox: cannot start {config['argv'][0]}: {e}\n".encode(errors="replace"))
     os._exit(127)
+
+
+# seccomp's view of a system call (struct seccomp_data): nr at 0, arch at 4, the
+# arguments from 16, 8 bytes each (their low 32 bits first, on these little-endian
+# machines). Per machine: the audit arch, and the numbers of ptrace,
+# process_vm_readv, process_vm_writev and prctl.
+SYSCALLS = {"x86_64": (0xC000003E, 101, 310, 311, 157), "aarch64": (0xC00000B7, 117, 270, 271, 167)}
+X32_BIT = 0x40000000
+
+
+def tracing_filter(machine):
+    """The BPF program of deny_tracing, as (code, jt, jf, k) rows; None on another machine.
+    A jump names where it goes on true and on false: "deny", "allow", or None for the next row."""
+    if machine not in SYSCALLS:
+        return None
+    arch, ptrace, readv, writev, prctl = SYSCALLS[machine]
+    LOAD, EQUAL, AT_LEAST, RETURN = 0x20, 0x15, 0x35, 0x06  # BPF_LD|W|ABS, BPF_JMP|JEQ|K, BPF_JMP|JGE|K, BPF_RET|K
+    steps = [(LOAD, 4), (EQUAL, arch, None, "deny"),                  # another ABI (i386)
+             (LOAD, 0)]                                               # the call's number
+    if machine == "x86_64":
+        steps.append((AT_LEAST, X32_BIT, "deny", None))               # the x32 ABI
+    steps += [(EQUAL, ptrace, "deny", None), (EQUAL, readv, "deny", None), (EQUAL, writev, "deny", None),
+              (EQUAL, prctl, None, "allow"),
+              (LOAD, 16), (EQUAL, PR_SET_DUMPABLE, None, "allow"),    # prctl's option
+              (LOAD, 24), (EQUAL, 0, "allow", "deny")]                # PR_SET_DUMPABLE to 0 only
+    where = {"deny": len(steps), "allow": len(steps) + 1}
+    rows = []
+    for at, step in enumerate(steps):
+        if step[0] == LOAD:
+            rows.append((LOAD, 0, 0, step[1]))
+        else:
+            jump = [where[to] - at - 1 if to else 0 for to in step[2:]]
+            rows.append((step[0], jump[0], jump[1], step[1]))
+    return rows + [(RETURN, 0, 0, 0x00050000 | 1),   # SECCOMP_RET_ERRNO | EPERM
+                   (RETURN, 0, 0, 0x7FFF0000)]       # SECCOMP_RET_ALLOW
+
+
+def deny_tracing(lib, missing):
+    """Installs the seccomp filter (after no-new-privileges, which it needs)."""
+    rows = tracing_filter(platform.machine())
+    if "seccomp" in switched_off() or lib is None or rows is None:
+        missing.append("seccomp")
+        return
+    import ctypes
+
+    class Row(ctypes.Structure):
+        _fields_ = [("code", ctypes.c_ushort), ("jt", ctypes.c_ubyte), ("jf", ctypes.c_ubyte), ("k", ctypes.c_uint)]
+
+    class Program(ctypes.Structure):
+        _fields_ = [("len", ctypes.c_ushort), ("filter", ctypes.POINTER(Row))]
+
+    table = (Row * len(rows))(*[Row(*r) for r in rows])
+    program = Program(len(rows), table)
+    if not call(lib, "prctl", PR_SET_SECCOMP, SECCOMP_MODE_FILTER, ctypes.byref(program), 0, 0):
+        missing.append("seccomp")
+
+
+def said(fd):
+    """The layers the program's child reported missing, read until it execs (or dies)."""
+    with os.fdopen(fd, "rb") as r:
+        text = r.read(4096)
+    try:
+        return [str(m) for m in json.loads(text)]
+    except ValueError:
+        return []
 
 
 def wait_until(pid, deadline, reap_others=False):
@@ -290,28 +366,38 @@ def run(config):
         missing.append("subreaper")
     if "limits" in off:
         missing.append("limits")
-    in_pidns, mounts = enter_namespaces(lib, config, missing)
+    in_pidns, mounts, in_userns = enter_namespaces(lib, config, missing)
     if not in_pidns and "mount" not in missing and config.get("hide"):
         missing.append("mount")
     report_read, report_write = os.pipe()
+    said_read, said_write = os.pipe2(os.O_CLOEXEC)  # what the program's child could not set up
     first = os.fork()
     if first == 0:
         os.close(report_read)
         if mounts:
             cover(lib, config["hide"], missing)
         if not in_pidns:
-            become_program(lib, config, False)
+            os.close(said_read)
+            become_program(lib, config, False, said_write)
         # The namespace's first process: start the program, reap every orphan, and at
         # its end (or the deadline) exit, which kills whatever is left in the namespace.
         if lib is not None:
             call(lib, "prctl", PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
         program = os.fork()
         if program == 0:
-            become_program(lib, config, mounts and uid is None)
+            os.close(said_read)
+            become_program(lib, config, in_userns and uid is None, said_write)
+        os.close(said_write)
+        missing += said(said_read)
         status = wait_until(program, deadline, reap_others=True)
         os.write(report_write, json.dumps({"returncode": returncode(status), "missing": missing}).encode())
         os._exit(0)
     os.close(report_write)
+    os.close(said_write)
+    if not in_pidns:
+        missing += said(said_read)
+    else:
+        os.close(said_read)
     if in_pidns:
         wait_until(first, deadline + 5)
         try:
@@ -364,6 +450,7 @@ NOTES = {
     "mount": "the tree is not covered (no mount namespace): the code can read it",
     "subreaper": "no subreaper: a process the code detaches may outlive grading",
     "limits": "no resource limits: memory, processes and file size are unlimited",
+    "seccomp": "no seccomp filter: only the test program's own flag keeps other processes out of its memory",
 }
 
 

@@ -277,8 +277,8 @@ class FakePrograms(unittest.TestCase):
         start = time.monotonic()
         with mock.patch.object(processes, "POSIX", False):
             found, problem, missing = results_of(writer, {"Ex99_1_A.Good": "", "Ex99_1_A.Bad": "", "Ex99_1_A.Hang": ""},
-                                                 limit=1.0)
-        self.assertLess(time.monotonic() - start, 20, "the deadline holds without process groups")
+                                                 limit=8.0)
+        self.assertLess(time.monotonic() - start, 40, "the deadline holds without process groups")
         self.assertTrue(found["Ex99_1_A.Good"].passed)
         self.assertEqual(found["Ex99_1_A.Bad"].hint, "the far root")
         self.assertIn("timed out", found["Ex99_1_A.Hang"].hint)
