@@ -358,19 +358,25 @@ def rebuilt_with_overlay(root, build_dir, built, targets, log, reporter):
 def objects_to_rebuild(build_dir, target, files, failed):
     """The target's objects compiled from the given files, or from files including one
     of them (Ninja's recorded dependencies), or whose compile failed."""
-    compiles = [p for p in map(overlay.compile_parts, overlay.ninja_commands(build_dir, target)) if p]
-    mine = {obj for _, obj in compiles}
-    chosen = {obj for source, obj in compiles if str((Path(build_dir) / source).resolve()) in files} | (failed & mine)
-    headers = {f for f in files if f.endswith((".hpp", ".h"))}
-    if headers and mine:
-        code, text = run(["ninja", "-C", str(build_dir), "-t", "deps", *sorted(mine)])
+    found = dependencies(build_dir, overlay.ninja_commands(build_dir, target))
+    return {obj for obj, paths in found.items() if paths & set(files)} | (set(failed) & set(found))
+
+
+def dependencies(build_dir, commands):
+    """{object: the resolved paths of its source and of every header it includes} for
+    the compiles among a target's commands (`ninja -t commands`), from the dependencies
+    Ninja recorded when it last built them."""
+    compiles = [p for p in map(overlay.compile_parts, commands) if p]
+    found = {obj: {str((Path(build_dir) / source).resolve())} for source, obj in compiles}
+    if found:
+        _, text = run(["ninja", "-C", str(build_dir), "-t", "deps", *sorted(found)])
         current = None
         for line in text.splitlines():
             if line and not line[0].isspace():
                 current = line.split(":")[0]
-            elif line.strip() and current and str((Path(build_dir) / line.strip()).resolve()) in headers:
-                chosen.add(current)
-    return chosen
+            elif line.strip() and current in found:
+                found[current].add(str((Path(build_dir) / line.strip()).resolve()))
+    return found
 
 
 def rebuilt_in_a_copy(root, build_dir, built, labs, quick):

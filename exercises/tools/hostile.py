@@ -175,6 +175,7 @@ class Case:
     needs: str = ""                    # "limits" or "user": only where the sandbox has them
     note: str = ""                     # a word the notes must carry
     prefix: str = ""                   # put before the reference body of 1.1
+    settle: float = 1.0                # seconds waited after grading before the results are read again
 
 
 CASES = [
@@ -184,7 +185,8 @@ CASES = [
          "empties the tree's files and writes the results file", sphere=READ_AND_THROW, plane=VANDALISE,
          earns={"1.1": 0, "1.2": 0}, fallback=True),
     Case("detach", "fork, setsid, fork: a grandchild that rewrites results.json after grading; 1.2 sleeps past the "
-         "time limit", sphere=DETACH, plane=SLEEP_PAST_THE_LIMIT, earns={"1.1": 0, "1.2": 0}, fallback=True),
+         "time limit", sphere=DETACH, plane=SLEEP_PAST_THE_LIMIT, earns={"1.1": 0, "1.2": 0}, fallback=True,
+         settle=6.0),  # its writer, had it lived, would write 4 s after it started
     Case("links", "lib/gi/geometry/*.cpp are links to the autograder's own reference", links=True,
          earns={"1.1": 0, "1.2": 0}, note="link"),
     Case("text", "an #include of the hidden tests in 1.1; a '}' that closes the function and a global whose "
@@ -347,7 +349,7 @@ def main(argv):
                 text = results.read_text()
                 data = json.loads(text)
                 check_results(case, data, label, tests, ag, work, secrets, problems, case.note)
-                time.sleep(5)  # what a detached process would do, it would have done by now
+                time.sleep(case.settle)  # what a detached process would do, it would have done by now
                 if results.read_text() != text:
                     problems.append(f"{label}: results.json changed after run_autograder returned")
                 if alive(values["MARK"]):

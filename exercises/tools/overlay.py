@@ -10,6 +10,10 @@ the overlay's copies first on the include path, so a stubbed header wins), the
 archives that hold them, and the program's link, each writing into the overlay
 folder. Everything else is the student's build, as it is: a syntax error costs the
 compile of the files that include it and one link, seconds, not a second tree.
+
+The mutant suite builds each planted bug the same way, each in an overlay folder of its
+own (`folder`), so that the reference's build is never touched and several mutants can
+be built at once: the mutated file's objects, its archive and one lab's link.
 """
 import concurrent.futures
 import os
@@ -62,25 +66,33 @@ def run_shell(command, cwd):
     return done.returncode, (done.stdout + done.stderr).decode("utf-8", errors="replace")
 
 
-def rebuild(root, build_dir, target, failed_objects, stubbed):
+def rebuild(root, build_dir, target, failed_objects, stubbed, folder=FOLDER, commands=None, prefix=None):
     """(path of the rebuilt program, None) or (None, compile log of a failure).
     `failed_objects`: object paths (as Ninja names them) whose compile failed;
-    `stubbed`: {path relative to root: stubbed text} of the files to replace."""
+    `stubbed`: {path relative to root: stubbed text} of the files to replace;
+    `folder`: the overlay, relative to build_dir (an object already compiled into it is
+    used again: two programs of one lab share their library's objects);
+    `commands`: the target's `ninja -t commands`, where the caller has them already;
+    `prefix`: {path relative to root: a header to -include first} for files replaced
+    (the mutant suite's precompiled preambles)."""
     root, build_dir = Path(root).resolve(), Path(build_dir).resolve()
-    overlay = build_dir / FOLDER
+    overlay = build_dir / folder
     include = overlay / "lib"
     for rel, text in stubbed.items():
         target_file = overlay / rel
         target_file.parent.mkdir(parents=True, exist_ok=True)
         target_file.write_text(text)
-    commands = ninja_commands(build_dir, target)
+    commands = ninja_commands(build_dir, target) if commands is None else commands
     replaced, compiles = {}, []
     for command in commands:
         parts = compile_parts(command)
         if not parts or parts[1] not in failed_objects:
             continue
         source, obj = parts
-        new_obj = f"{FOLDER}/obj/{obj}"
+        new_obj = f"{folder}/obj/{obj}"
+        replaced[obj] = new_obj
+        if (build_dir / new_obj).is_file():
+            continue
         (build_dir / new_obj).parent.mkdir(parents=True, exist_ok=True)
         words = {obj: new_obj, obj + ".d": new_obj + ".d"}
         try:
@@ -93,11 +105,14 @@ def rebuild(root, build_dir, target, failed_objects, stubbed):
         first_include = re.search(r"(?<![^\s])-I", new)
         if not first_include:
             raise OverlayError(f"a compile command of {target} without -I")
-        compiles.append(new[:first_include.start()] + f"-I{shlex.quote(str(include))} " + new[first_include.start():])
-        replaced[obj] = new_obj
+        first = f"-I{shlex.quote(str(include))} "
+        if prefix and prefix.get(rel):
+            first += f"-include {shlex.quote(str(prefix[rel]))} "
+        compiles.append((new[:first_include.start()] + first + new[first_include.start():], build_dir / new_obj))
     with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
-        for code, log in pool.map(lambda c: run_shell(c, build_dir), compiles):
+        for (code, log), (_, obj) in zip(pool.map(lambda c: run_shell(c[0], build_dir), compiles), compiles):
             if code != 0:
+                obj.unlink(missing_ok=True)  # a half-written object is never used again
                 return None, log.replace(str(overlay) + "/", str(root) + "/")
     missing = set(failed_objects) - set(replaced)
     if missing:
@@ -109,14 +124,14 @@ def rebuild(root, build_dir, target, failed_objects, stubbed):
         archive = ARCHIVE.search(command)
         if archive and any(re.search(rf"(?<![^\s]){re.escape(o)}(?![^\s])", command) for o in replaced):
             lib = archive.group(1)
-            replaced[lib] = f"{FOLDER}/{lib}"
+            replaced[lib] = f"{folder}/{lib}"
             (build_dir / replaced[lib]).parent.mkdir(parents=True, exist_ok=True)
             code, log = run_shell(substitute(command, replaced), build_dir)
             if code != 0:
                 raise OverlayError(f"cannot archive {lib} again: {log.strip()[-300:]}")
         linked = re.search(r"(?<![^\s])-o\s+(\S*bin/" + re.escape(target) + r")(?![^\s])", command)
         if linked:
-            program = f"{FOLDER}/bin/{target}"
+            program = f"{folder}/bin/{target}"
             (build_dir / program).parent.mkdir(parents=True, exist_ok=True)
             code, log = run_shell(substitute(command, {**replaced, linked.group(1): program}), build_dir)
             if code != 0:

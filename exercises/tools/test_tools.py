@@ -1,6 +1,8 @@
 """Unit tests of the exercise tools on small made-up trees, and checks of the graded
 tests and handouts themselves (ctest: exercise_tools)."""
 import re
+import shutil
+import subprocess
 import sys
 import tempfile
 import unittest
@@ -217,6 +219,60 @@ Triples instead of doubling.
     def test_every_mutant_in_the_repository_applies(self):
         for m in mutants.load(sorted((ROOT / "exercises" / "mutants").glob("*.mut"))):
             self.assertNotEqual(mutants.apply((ROOT / m.file).read_text(), m), (ROOT / m.file).read_text(), m.id)
+
+
+LIBRARY = {
+    "CMakeLists.txt": "cmake_minimum_required(VERSION 3.20)\nproject(t CXX)\nset(CMAKE_RUNTIME_OUTPUT_DIRECTORY "
+                      "${CMAKE_BINARY_DIR}/bin)\nadd_library(twice STATIC lib/twice.cpp lib/other.cpp)\n"
+                      "target_include_directories(twice PUBLIC lib)\nadd_executable(lab03_graded main.cpp)\n"
+                      "target_link_libraries(lab03_graded twice)\n",
+    "lib/twice.hpp": "#pragma once\n#include <vector>\ndouble twice(double x);\ndouble other();\n",
+    "lib/twice.cpp": '#include "twice.hpp"\n\n#include <string>\n' + SOURCE,
+    "lib/gi/core/not_implemented.hpp": "#pragma once\n",
+    "lib/other.cpp": '#include "twice.hpp"\ndouble other() { return 1; }\n',
+    "main.cpp": '#include <cstdio>\n#include "twice.hpp"\nint main() { std::printf("%g\\n", twice(2) + other()); }\n',
+}
+
+
+@unittest.skipUnless(shutil.which("cmake") and shutil.which("ninja") and shutil.which("c++"), "needs cmake, ninja, c++")
+class MutantBuilds(unittest.TestCase):
+    """A mutant is built in an overlay of its own, with and without its file's
+    precompiled preamble, and the reference's build is left as it was."""
+
+    def test_an_overlay_holds_the_mutant_and_the_reference_build_is_untouched(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            work = Path(tmp)
+            for rel, text in LIBRARY.items():
+                (work / "src" / rel).parent.mkdir(parents=True, exist_ok=True)
+                (work / "src" / rel).write_text(text)
+            for argv in (["cmake", "-S", work / "src", "-B", work / "build", "-G", "Ninja"],
+                         ["cmake", "--build", work / "build"]):
+                subprocess.run(argv, check=True, capture_output=True)
+            [m] = mutants.parse(Mutants.TEXT.replace("a.cpp", "lib/twice.cpp"), "t.mut")
+            [broken] = mutants.parse(Mutants.TEXT.replace("a.cpp", "lib/twice.cpp").replace("x + x + x", "x +"),
+                                     "t.mut")
+            reference = mutants.Reference(work)
+            preambles, plain = mutants.Preambles(work, [m, broken]), mutants.Preambles(work, [m])
+            plain.made[m.file] = None  # as for a header: no preamble
+            self.assertEqual(mutants.leading_includes(LIBRARY["lib/twice.cpp"]),
+                             '#include "twice.hpp"\n\n#include <string>\n#include "gi/core/not_implemented.hpp"\n')
+            for k, made in enumerate((preambles, plain)):
+                program, problem = mutants.build_program(m, "lab03_graded", reference, f"overlays/{k}", made)
+                self.assertEqual(problem, "")
+                self.assertEqual(subprocess.run([program], capture_output=True, text=True).stdout, "7\n", "3 x 2 + 1")
+                made.done_with(m.file)
+            header = preambles.made[m.file]
+            self.assertIsNotNone(header, "the preamble was made")
+            self.assertTrue(Path(f"{header}.gch").is_file())
+            program, problem = mutants.build_program(broken, "lab03_graded", reference, "overlays/2", preambles)
+            self.assertIsNone(program)
+            self.assertRegex(problem, r"^does not compile: .*twice\.cpp:\d+:\d*:? ?error")
+            preambles.done_with(broken.file)
+            self.assertFalse(Path(f"{header}.gch").exists(), "removed after its file's last mutant")
+            self.assertEqual(subprocess.run([work / "build" / "bin" / "lab03_graded"], capture_output=True,
+                                            text=True).stdout, "5\n", "the reference's program is the reference's")
+            done = subprocess.run(["ninja", "-C", work / "build", "-n"], capture_output=True, text=True)
+            self.assertIn("no work to do", done.stdout, "the reference's build is not changed")
 
 
 MACRO = re.compile(r"\b(EXPECT|ASSERT)_[A-Z_]+\s*\(")
