@@ -110,8 +110,8 @@ class Runner:
         self.hide = [str(Path(h).resolve()) for h in hide]
         off = sandbox.switched_off()
         self.channel = processes.POSIX and "channel" not in off
-        self.uid = (sandbox.free_uid() if self.isolate and os.geteuid() == 0 and "user" not in off
-                    else None)
+        self.uid, self.uid_lock = (sandbox.free_uid() if self.isolate and os.geteuid() == 0 and "user" not in off
+                                   else (None, None))
         physical = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") if hasattr(os, "sysconf") else 0
         self.memory = min(memory, physical // 2) if memory and physical else memory
         self.missing = set() if self.channel else {"channel"}
@@ -125,6 +125,9 @@ class Runner:
 
     def close(self):
         shutil.rmtree(self.base, ignore_errors=True)
+        if self.uid_lock is not None:
+            os.close(self.uid_lock)  # the uid is free for another grader
+            self.uid_lock = None
 
     def __enter__(self):
         return self

@@ -82,7 +82,10 @@ def call(lib, name, *args):
 
 
 def free_uid():
-    """A user id no account and no process uses, for the programs under test (root only)."""
+    """(uid, lock): a user id no account and no process uses, for the programs under test
+    (root only), and a descriptor holding it: two graders running at once must not share
+    a user, or the one that cleans up after its tests would kill the other's and remove
+    its files. Keep the lock open while the uid is in use; closing it frees the uid."""
     used = set()
     try:
         used |= {int(line.split(":")[2]) for line in Path("/etc/passwd").read_text().splitlines() if line.count(":") >= 2}
@@ -94,7 +97,18 @@ def free_uid():
                      for x in line.split()[1:]}
         except (OSError, ValueError):
             pass
-    return next(uid for uid in range(61000, 62000) if uid not in used)
+    import fcntl  # POSIX, as is running as root
+
+    for uid in range(61000, 62000):
+        if uid in used:
+            continue
+        lock = os.open(f"/tmp/gi-sandbox-uid-{uid}.lock", os.O_RDWR | os.O_CREAT | os.O_CLOEXEC | os.O_NOFOLLOW, 0o600)
+        try:
+            fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            return uid, lock
+        except OSError:
+            os.close(lock)  # another grader holds this one
+    raise OSError("no free user id from 61000 to 61999 for the tests")
 
 
 # ---- inside the sandbox -------------------------------------------------------------

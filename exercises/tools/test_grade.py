@@ -294,6 +294,19 @@ class FakePrograms(unittest.TestCase):
         self.assertFalse(found["Ex99_1_A.One"].passed)
 
 
+class Users(unittest.TestCase):
+    @unittest.skipUnless(processes.POSIX and os.geteuid() == 0 and "user" not in sandbox.switched_off(),
+                         "a user of its own for the tests needs root")
+    def test_two_graders_at_once_never_share_the_tests_user(self):
+        # (the one that cleans up after its tests would kill the other's and remove its files)
+        with gtest_run.Runner() as first, gtest_run.Runner() as second:
+            self.assertIsNotNone(first.uid)
+            self.assertNotEqual(first.uid, second.uid)
+            taken = first.uid
+        with gtest_run.Runner() as third:
+            self.assertEqual(third.uid, taken, "a grader that has ended frees its user")
+
+
 class Hints(unittest.TestCase):
     def test_the_tests_message_without_gtests_lines(self):
         self.assertEqual(gtest_run.hint("a.cpp:5\nExpected equality of these values:\n  v[0]\n    Which is: (1, 2, 3)\n"
