@@ -18,6 +18,7 @@
 #include "gi/core/samplers/sample_stream.hpp"
 #include "gi/geometry/aabb.hpp"
 #include "gi/radiosity/form_factors/hemicube.hpp"
+#include "gi/radiosity/hierarchical/oracle.hpp"
 #include "gi/radiosity/system/solver.hpp"
 #include "gi/render/pixel_samplers.hpp"
 #include "gi/raytrace/soft_shadows.hpp"
@@ -61,6 +62,7 @@ inline void PrintTo(const vec3& v, std::ostream* os) { gi::print::vector(v, 3, o
 namespace gi {
 
 inline void PrintTo(SolveStatus s, std::ostream* os) { *os << status_name(s); }
+inline void PrintTo(Refinement r, std::ostream* os) { *os << name(r); }
 inline void PrintTo(HemicubeFace f, std::ostream* os) { print::name(f, {"Top", "PlusX", "MinusX", "PlusY", "MinusY"}, os); }
 inline void PrintTo(PrimitiveKind k, std::ostream* os) { print::name(k, {"Sphere", "Quad", "Triangle"}, os); }
 inline void PrintTo(Split s, std::ostream* os) { print::name(s, {"Sah", "Median"}, os); }
