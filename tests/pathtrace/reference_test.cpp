@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "gi/core/platform/process.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "support/statistics.hpp"
 
@@ -17,7 +18,7 @@ namespace t = gi::testing;
 namespace {
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("gi_reference_test_" + std::to_string(::getpid()));
+  const fs::path dir = fs::temp_directory_path() / ("gi_reference_test_" + std::to_string(gi::platform::current_process_id()));
   fs::create_directories(dir);
   return dir / name;
 }
