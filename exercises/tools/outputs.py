@@ -13,6 +13,18 @@ what depends on the machine:
   - in other lines, a number followed by " ms", " s" or " us", or following a word
     listed after "skip:" ("ratio 110").
 Tables are compared cell by cell, so a wider time column does not matter.
+
+Numbers in the prose that quote a lesson are checked too. A line
+
+    <!-- quotes: 13_hierarchical --threshold 1e-2 | derived: 38% = 100 * 0.3494; 7.7 = 4.12e-2 / 5.33e-3 | not: 1991 -->
+
+is followed by a paragraph (up to the next blank line) in which every number must
+be one the lesson prints (in the same run, compared by value: 13.0 is 13), or be
+derived from printed numbers as the marker says -- the expression, whose operands
+are printed numbers or whole numbers up to 1000, must round to the prose's number
+in its last digit -- or be listed after "not:" (a year, a setting, a constant of
+the lecture). Numbers in `code`, link targets, lesson, lab and exercise numbers and
+times (a number before " ms", " s" or " us") are not quotes; 10⁻⁴ reads as 1e-4.
 Usage: outputs.py check|fix ROOT BIN_DIR     (fix rewrites stale blocks from the run)
 """
 import difflib
@@ -29,8 +41,81 @@ NUMBER = r"-?\d+(\.\d+)?(e[-+]?\d+)?"
 CELLS = re.compile(r"\s{2,}")
 
 
+QUOTES = re.compile(r"^<!-- quotes: (\S+)((?: [^|]*?)?)(?: \| derived: (.+?))?(?: \| not: (.+?))? -->\s*$")
+# A number in prose: digits grouped by spaces ("100 000"), a decimal part, an exponent.
+PROSE_NUMBER = re.compile(r"(?<![\w.^/-])-?\d{1,3}(?:[ \u202f\u2009]\d{3})+(?![\w.])|(?<![\w.^/-])-?\d+(?:\.\d+)?"
+                          r"(?:e[-+]?\d+)?(?![\w/^]|\.\d)")
+OUTPUT_NUMBER = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+NOT_QUOTES = re.compile(r"`[^`]*`|\]\([^)]*\)|\b(?:[Ll]essons?|[Ll]abs?|[Ee]xercises?|docs/)\s*\d+(?:[.,–-]\d+)*"
+                        r"|\d+(?:\.\d+)?(?= (?:ms|s|us|µs)\b)")
+SUPERSCRIPT = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺", "0123456789-+")
+
+
 class OutputError(Exception):
     pass
+
+
+def prose_numbers(text):
+    """The numbers a paragraph of prose states, as written (spaces between digit
+    groups removed), leaving out those that are not quotes of a lesson."""
+    text = re.sub(r"10([⁻⁺]?[⁰¹²³⁴⁵⁶⁷⁸⁹]+)", lambda m: "1e" + m.group(1).translate(SUPERSCRIPT), text)
+    text = text.replace("−", "-")
+    text = NOT_QUOTES.sub(" ", text)
+    return [re.sub(r"[ \u202f\u2009]", "", m.group(0)) for m in PROSE_NUMBER.finditer(text)]
+
+
+def same_value(a, b):
+    return abs(float(a) - float(b)) <= 1e-12 * max(abs(float(a)), abs(float(b)))
+
+
+def last_digit(text):
+    """Half the unit of the last digit written: 7.7 -> 0.05, 1.8e-2 -> 5e-4, 38 -> 0.5."""
+    mantissa, _, exponent = text.lower().partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    return 0.5 * 10 ** (-decimals + (int(exponent) if exponent else 0))
+
+
+def check_quotes(text, printed, derived, not_quotes):
+    """Problems with the numbers of one paragraph against the lesson's printed numbers."""
+    problems = []
+    for name, expression in derived.items():
+        operands = OUTPUT_NUMBER.findall(expression)
+        unknown = [o for o in operands if not any(same_value(o, p) for p in printed)
+                   and not (o.isdigit() and int(o) <= 1000)]
+        if unknown or all(o.isdigit() and int(o) <= 1000 for o in operands):
+            problems.append(f"derived {name} = {expression}: {', '.join(unknown) or 'no printed number'} "
+                            "not among the printed numbers")
+            continue
+        if not re.fullmatch(r"[-+*/()0-9.e ]+", expression):
+            problems.append(f"derived {name} = {expression}: only numbers and + - * / ( ) may be used")
+            continue
+        value = eval(expression, {"__builtins__": {}})  # noqa: S307 -- digits and operators only
+        if abs(value - float(name)) > last_digit(name) * (1 + 1e-9):
+            problems.append(f"derived {name} = {expression} gives {value:.6g}")
+    for number in prose_numbers(text):
+        if number in not_quotes or any(same_value(number, d) for d in derived) or \
+                any(same_value(number, p) for p in printed):
+            continue
+        problems.append(f"{number} is not a number the lesson prints (quote it as printed, or derive it)")
+    return problems
+
+
+def quote_markers(doc_lines):
+    """(marker index, command, derived {prose: expression}, not-quotes, paragraph text)."""
+    for i, line in enumerate(doc_lines):
+        m = QUOTES.match(line)
+        if not m:
+            continue
+        end = next((j for j in range(i + 1, len(doc_lines)) if not doc_lines[j].strip()), len(doc_lines))
+        if end == i + 1:
+            raise OutputError(f"line {i + 1}: a quotes marker must be followed by its paragraph")
+        derived = {}
+        for item in (m.group(3) or "").split(";"):
+            if item.strip():
+                name, _, expression = item.partition("=")
+                derived[name.strip().rstrip("%×x").strip()] = expression.strip()
+        not_quotes = [n.strip() for n in (m.group(4) or "").split(",") if n.strip()]
+        yield i, [m.group(1)] + m.group(2).split(), derived, not_quotes, " ".join(doc_lines[i + 1:end])
 
 
 def normalise(lines, skip_words):
@@ -146,6 +231,20 @@ def process(root, bin_dir, fix):
             diff = "\n".join(difflib.unified_diff(normalise(block, skip), normalise(output, skip), "doc",
                                                   " ".join(command), lineterm="", n=1))
             problems.append(f"{doc.name}:{marker + 1}: output of {' '.join(command)} is stale\n{diff}")
+        try:
+            quoted = list(quote_markers(lines))
+        except OutputError as e:
+            problems.append(f"{doc.name}: {e}")
+            quoted = []
+        for marker, command, derived, not_quotes, text in quoted:
+            try:
+                output = run_lesson(bin_dir, command, cache)
+            except (OutputError, subprocess.TimeoutExpired) as e:
+                problems.append(f"{doc.name}:{marker + 1}: {e}")
+                continue
+            printed = [n for line in normalise(output, []) for n in OUTPUT_NUMBER.findall(line)]
+            for problem in check_quotes(text, printed, derived, not_quotes):
+                problems.append(f"{doc.name}:{marker + 1}: prose quoting {' '.join(command)}: {problem}")
         if changed:
             doc.write_text("\n".join(lines) + "\n")
     return problems

@@ -69,5 +69,46 @@ class Outputs(unittest.TestCase):
         self.assertIn("must be followed by a plain ``` block", self.check(root)[0])
 
 
+
+def quotes_tree(marker, paragraph):
+    root = make_tree(PRINTED)
+    (root / "docs" / "page.md").write_text("Text\n\n" + marker + "\n" + paragraph + "\n\nMore 99.\n")
+    return root
+
+
+class Quotes(unittest.TestCase):
+    """Numbers in prose that quote a lesson: printed ones, derived ones, and the rest refused."""
+
+    def problems(self, marker, paragraph):
+        root = quotes_tree(marker, paragraph)
+        return outputs.process(root, root / "bin", fix=False)
+
+    def test_printed_numbers_pass_by_value(self):
+        text = "The mesh has 571 elements; Jacobi's error is 5.5e-01, 0.55 as a number, in 131 ms of `--flag 7`."
+        self.assertEqual(self.problems("<!-- quotes: 99_fake --flag -->", text), [])
+
+    def test_a_drifted_number_is_refused(self):
+        problems = self.problems("<!-- quotes: 99_fake --flag -->", "It has 570 elements\nand 5.5e-01 error.")
+        self.assertEqual(len(problems), 1)
+        self.assertIn("page.md:3: prose quoting 99_fake --flag: 570 is not a number the lesson prints", problems[0])
+
+    def test_derived_numbers_must_round_to_the_prose(self):
+        marker = "<!-- quotes: 99_fake --flag | derived: 62% = 100 * 3.4e-01 / 5.5e-01; 1.04× = 3.4e-01 + 0.7 -->"
+        problems = self.problems(marker, "Gauss-Seidel's error is 62% of Jacobi's, and 1.04×.")
+        self.assertEqual(len(problems), 1)  # 0.7 is not printed; 62 is right
+        self.assertIn("derived 1.04 = 3.4e-01 + 0.7: 0.7 not among the printed numbers", problems[0])
+        wrong = self.problems("<!-- quotes: 99_fake --flag | derived: 60% = 100 * 3.4e-01 / 5.5e-01 -->", "It is 60%.")
+        self.assertIn("gives 61.8", wrong[0])
+
+    def test_not_quotes_and_references_are_left_alone(self):
+        text = "Lesson 12 and lab 3 (exercise 2.5) cite Whitted 1980; 571 elements."
+        self.assertEqual(self.problems("<!-- quotes: 99_fake --flag | not: 1980 -->", text), [])
+        self.assertEqual(len(self.problems("<!-- quotes: 99_fake --flag -->", text)), 1)
+
+    def test_a_marker_needs_its_paragraph(self):
+        problems = self.problems("<!-- quotes: 99_fake --flag -->", "")
+        self.assertIn("must be followed by its paragraph", problems[0])
+
+
 if __name__ == "__main__":
     unittest.main()

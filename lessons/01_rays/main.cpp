@@ -62,7 +62,8 @@ void draw_eye_rays(const gi::World& world, int width, int height, gi::Lesson& le
   lesson.picture(hit_or_miss, "hit_or_miss", "white where an eye ray hits something", view);
   lesson.picture(normals, "normals", "the surface normal n as the colour 0.5 n + 0.5", view);
   lesson.diagram(gi::false_colour(distance, width, height, 0.0, 1.0), "depth",
-                 "distance to the hit in false colour, red near, black at twice the distance to look_at");
+                 "distance to the hit in false colour, red near, black at twice the distance to look_at",
+                 gi::ColourScale{far, 0, "distance t along the eye ray (misses black)"});
 }
 
 }  // namespace

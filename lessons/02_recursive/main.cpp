@@ -77,7 +77,8 @@ Sweep depth_sweep(const gi::World& world, gi::RenderSettings settings, int max_d
                    view(world, settings));
     if (depth == 1)
       lesson.diagram(gi::difference_image(r.image, reference.image), "diff_depth_1",
-                     "|depth 1 - reference| in false colour, red at the largest difference");
+                     "|depth 1 - reference| in false colour, red at the largest difference",
+                     gi::ColourScale{0, gi::largest_difference(r.image, reference.image), "|difference| in radiance"});
   }
   return sweep;
 }

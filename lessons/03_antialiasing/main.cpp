@@ -118,7 +118,8 @@ int main(int argc, char** argv) {
         if (m.sampling.threshold == 0.05) {
           const std::vector<double> counts(r.samples.begin(), r.samples.end());
           lesson.diagram(gi::false_colour(counts, settings.width, settings.height, 0, s.back()),
-                         "adaptive_samples_heatmap", "eye rays per pixel of adaptive 0.05, black 0 to red the most");
+                         "adaptive_samples_heatmap", "eye rays per pixel of adaptive 0.05, black 0 to red the most",
+                         gi::ColourScale{0, double(s.back()), "eye rays per pixel"});
         }
       }
       const bool sixteen = m.sampling.n == 4 || m.sampling.sampler == gi::Sampler::Centre ||

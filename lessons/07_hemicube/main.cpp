@@ -62,7 +62,8 @@ void hemicube_pictures(const gi::Mesh& mesh, int resolution, gi::Lesson& lesson)
     return gi::false_colour({dF}, 1, 1, 0, top).pixels[0];
   });
   lesson.diagram(gi::enlarge(weights, std::max(1, 300 / resolution)), "delta_form_factors",
-                 "the delta form factor of every hemicube cell in false colour, red at the top face's centre");
+                 "the delta form factor of every hemicube cell in false colour, red at the top face's centre",
+                 gi::ColourScale{0, top, "delta form factor of a cell"});
 }
 
 // Reciprocity over the whole matrix: sum |A_i F_ij - A_j F_ji| / sum A_i F_ij. The
@@ -132,7 +133,7 @@ void matrix_picture(const gi::FormFactorMatrix& F, int resolution, gi::Lesson& l
   for (std::size_t k = 0; k < logs.size(); ++k) logs[k] = F.values[k] > 0 ? std::log10(F.values[k]) : -8;
   lesson.diagram(gi::false_colour(logs, F.n, F.n, -6, -1), "form_factor_matrix",
                  "log10 F_ij of the whole matrix (hemicube " + std::to_string(resolution) +
-                     "), black below 1e-6 to red at 0.1");
+                     "), black below 1e-6 to red at 0.1", gi::ColourScale{1e-6, 0.1, "form factor F_ij", true});
 }
 
 }  // namespace

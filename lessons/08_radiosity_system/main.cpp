@@ -95,7 +95,8 @@ int main(int argc, char** argv) {
     const double direct_ms = direct_timer.milliseconds();
     if (direct.status != gi::SolveStatus::Converged)
       throw std::runtime_error("the direct solution failed: " + gi::stop_reason(direct, "step"));
-    lesson.diagram(matrix_picture(system), "matrix_K", "log10 |K_ij| of K = I - RF (green channel), the diagonal's 1 in red");
+    lesson.diagram(matrix_picture(system), "matrix_K", "log10 |K_ij| of K = I - RF in false colour, black below 1e-5 to red at 1 (the diagonal)",
+                   gi::ColourScale{1e-5, 1, "|K_ij|", true});
     const std::string title = scene_name == "cornell" ? "Cornell box" : "Scene " + scene.name;
     lesson.say(title + ", " + std::to_string(system.size()) + " elements: form factors (hemicube " +
                std::to_string(resolution) + ") " + gi::format_number(ff_ms, 0, gi::Format::Fixed) +

@@ -166,7 +166,8 @@ std::vector<Snapshot> converge(const gi::PathScene& scene, const Settings& s, gi
       relative.push_back(std::sqrt(grey(variance.pixels[i])) / std::max(1e-6, grey(mean.pixels[i])));
     pictures->diagram(gi::false_colour(relative, s.width, s.height, 0, 0.5),
                       "relative_error_" + std::to_string(s.max_spp) + "spp",
-                      "each pixel's relative standard error at the last picture, black 0 to red 50%");
+                      "each pixel's relative standard error at the last picture, black 0 to red 50%",
+                      gi::ColourScale{0, 0.5, "relative standard error of the pixel's mean"});
     strip.push_back(reference.mean);
     pictures->diagram(gi::side_by_side(strip), "progression", "1, 4, 16, ... spp, then the reference");
     pictures->picture(reference.mean, "reference", "the reference, " + std::to_string(reference.spp) + " spp",
@@ -312,13 +313,13 @@ int main(int argc, char** argv) {
                   true, true, curves},
                  "error_vs_time");
 
-    // 4. Speed, against Cycles' 48 ms per sample per pixel at 256x256 on 2 threads (issue
-    // 15's measurement on the all-diffuse box; Blender is not part of this workbench).
+    // 4. Speed, in the unit docs/15 compares with Blender's Cycles on the same box:
+    // ms per sample per pixel at 256x256.
     const double rate = mis.back().spp * double(s.width) * s.height / mis.back().seconds;
     lesson.say("\nspeed: " + gi::format_number(1e-6 * rate, 2, gi::Format::Fixed) + " M samples/s with MIS = " +
                gi::format_number(1e3 * 256 * 256 / rate, 1, gi::Format::Fixed) +
                " ms per sample per pixel at 256x256, on " + (s.threads ? std::to_string(s.threads) : "all") +
-               " threads (issue 15 measured Cycles at about 48 ms on 2 threads)");
+               " threads (against Blender's Cycles: docs/15, \"Speed\")");
     lesson.say("images: " + lesson.out().string() + "/ (" + s.scene + "_<spp>spp.png and .pfm, progression.png: 1, " +
                "4, 16 ... spp and the reference; relative_error_" + std::to_string(s.max_spp) +
                "spp.png, error_vs_time.svg)");

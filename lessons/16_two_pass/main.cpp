@@ -198,7 +198,8 @@ void two_pass_lesson(const Settings& s, gi::Lesson& lesson) {
   lesson.diagram(gi::side_by_side(row), s.scene + "_side_by_side",
                  "ray traced, radiosity, two-pass mesh, two-pass gather, path traced", 2);
   lesson.diagram(gi::difference_image(pictures.back().radiance, truth->mean, 0.1), s.scene + "_gather_difference",
-                 "|two-pass with final gather - path traced|, mean over channels: black 0, red 0.1 (radiance)");
+                 "|two-pass with final gather - path traced|, mean over channels: black 0, red 0.1 (radiance)",
+                 gi::ColourScale{0, 0.1, "|difference| in radiance, mean over R, G, B"});
 }
 
 }  // namespace

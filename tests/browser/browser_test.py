@@ -1,9 +1,15 @@
 #!/usr/bin/env python3
 """The lessons' pages in a real browser (headless Chromium, SwiftShader's WebGL2).
 
-Runs lessons 08 to 12 small into a scratch folder, then checks that
+Runs every lesson small into a scratch folder, then checks that
   - every report page (index.html) and out/index.html load with no console error,
-    show all their images, and out/index.html links each lesson;
+    show all their images, fit a window 1280 px wide (nothing overflows sideways),
+    link the lesson's chapter (docs/NN_topic.md, a file that exists) and its lab,
+    and that out/index.html links each lesson's page, chapter and lab;
+  - every false-colour picture has its colour bar: each figure the page marks as
+    false colour shows a bar with its values and quantity, and every PNG whose
+    pixels lie on the false-colour ramp (black, blue, green, yellow, red; read here
+    from the file, not from the page) is such a figure;
   - each viewer loads with no console error and draws; moving the step slider (a
     real click on it), a light's slider and dragging the camera change the canvas;
     the pointer over the chart writes the curves' values under it;
@@ -16,8 +22,8 @@ Runs lessons 08 to 12 small into a scratch folder, then checks that
     mean absolute difference at most 2 of 255 per channel, and at most 1% of the
     pixels off by more than 32 in some channel (rasterisation may differ at edges
     between CPUs; a wrong colour, camera or shot moves far more than that).
-Writes screenshots of the whole viewer pages of lessons 11 and 13 for docs/viewer.md
-into the scratch folder. Exits 77 (ctest: skipped) with one line when Chromium is missing.
+Writes screenshots of the whole viewer pages of lessons 11 and 13 for docs/viewer.md,
+and of every report page, into the scratch folder. Exits 77 (ctest: skipped) with one line when Chromium is missing.
 
     browser_test.py BIN_DIR WORK_DIR [--update]   (--update rewrites the reference)
 """
@@ -33,11 +39,21 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
 from cdp import Browser, Page, ProtocolError  # noqa: E402
-from png import difference  # noqa: E402
+from png import difference, read_png  # noqa: E402
 
 REFERENCE = Path(__file__).parent.parent / "data" / "viewer_11_shot.png"
 MEAN_LIMIT, FAR_LIMIT = 2.0, 0.01
 LESSONS = {
+    "01_rays": ["--width", "64", "--height", "48"],
+    "02_recursive": ["--width", "48", "--height", "36", "--max-depth", "3", "--reference-depth", "6", "--repeat", "1"],
+    "03_antialiasing": ["--width", "48", "--height", "36", "--depth", "1", "--reference-n", "6"],
+    "04_soft_shadows": ["--width", "40", "--height", "30", "--reference-n", "6"],
+    "05_acceleration": ["--width", "16", "--height", "16", "--max-spheres", "10", "--room-quads", "100",
+                        "--change-rays", "16", "--picture-scale", "0.05", "--threads", "2"],
+    "06_form_factors": ["--rays", "200", "--resolution", "20", "--order", "2", "--sweep-rays", "1000",
+                        "--reference-rays", "10000"],
+    "07_hemicube": ["--elements", "40", "--resolution", "30", "--max-resolution", "20", "--speed-elements", "100",
+                    "--speed-rays", "3000"],
     "08_radiosity_system": ["--elements", "60", "--resolution", "20", "--bounces", "3", "--width", "32", "--height", "32"],
     "09_jacobi_gauss_seidel": ["--elements", "60", "--resolution", "20", "--iterations", "20"],
     "11_progressive": ["--patches", "60", "--resolution", "20", "--width", "16", "--height", "16",
@@ -45,7 +61,13 @@ LESSONS = {
     "10_southwell": ["--elements", "60", "--resolution", "20", "--sweeps", "10"],
     "12_solver_showdown": ["--elements", "20", "--bandwidth-n", "100", "--skip-mesh-study"],
     "13_hierarchical": ["--skip-studies", "--threshold", "1e-2", "--min-area", "3e-3"],
+    "14_path_tracing": ["--width", "32", "--height", "32", "--max-spp", "8"],
+    "15_radiosity_vs_path_tracing": ["--size", "64", "--max-spp", "4", "--caustic-spp", "32"],
+    "16_two_pass": ["--width", "32", "--height", "32", "--elements", "100", "--samples", "1", "--gather", "2"],
 }
+VIEWERS = ["08_radiosity_system", "09_jacobi_gauss_seidel", "10_southwell", "11_progressive", "12_solver_showdown",
+           "13_hierarchical"]
+PAGE_WIDTH = 1280
 SHOT_FRAME = 12  # the frame of lesson 11's replay the reference shows
 
 problems = []
@@ -71,21 +93,100 @@ def changed(before, after):
     return mean > 0.5
 
 
+def srgb_to_linear(c):
+    c /= 255
+    return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+
+def on_ramp(r, g, b):
+    """Whether an sRGB pixel lies on the false-colour ramp (image/diff.hpp): black to
+    blue (r = g = 0), blue to green (r = 0, g + b = 1 in linear terms), green to
+    yellow (g full, b = 0), yellow to red (r full, b = 0)."""
+    lo, hi = 3, 252
+    if r <= lo and g <= lo:
+        return True
+    if r <= lo:
+        return abs(srgb_to_linear(g) + srgb_to_linear(b) - 1) < 0.03
+    if b <= lo and (g >= hi or r >= hi):
+        return True
+    return False
+
+
+def is_false_colour(png_bytes):
+    """A PNG nearly all of whose pixels lie on the ramp, with some colour in it."""
+    width, height, rows = read_png(png_bytes)
+    step = max(1, (width * height) // 20000)  # a sample of the pixels is enough
+    total = on = coloured = 0
+    for k in range(0, width * height, step):
+        row = rows[k // width]
+        r, g, b = row[3 * (k % width):3 * (k % width) + 3]
+        total += 1
+        if on_ramp(r, g, b):
+            on += 1
+            coloured += max(r, g, b) > 40
+    return on >= 0.97 * total and coloured >= 0.02 * total
+
+
+def page_links(page):
+    return page.evaluate("Array.from(document.links).map((a) => [a.className, a.getAttribute('href'), a.href])")
+
+
+def linked_file(href):
+    """The file a file:// link names."""
+    from urllib.parse import unquote, urlparse
+    return Path(unquote(urlparse(href).path))
+
+
 def report_pages(browser, out):
-    page = Page(browser, 1200, 900)
+    page = Page(browser, PAGE_WIDTH, 900)
     for lesson in LESSONS:
+        what = f"{lesson}/index.html"
         page.open((out / lesson / "index.html").as_uri())
         images = page.evaluate("Array.from(document.images).map((i) => i.complete && i.naturalWidth > 0)")
-        check(images and all(images), f"{lesson}/index.html: {images.count(False)} of {len(images)} images not shown")
+        check(images and all(images), f"{what}: {images.count(False)} of {len(images)} images not shown")
         check(page.evaluate("document.querySelector('p.status').textContent") == "complete",
-              f"{lesson}/index.html: the status is not 'complete'")
-        no_errors(page, f"{lesson}/index.html")
+              f"{what}: the status is not 'complete'")
+        overflow = page.evaluate("document.documentElement.scrollWidth - window.innerWidth")
+        check(overflow <= 0, f"{what}: {overflow} px wider than a {PAGE_WIDTH} px window")
+        check(page.evaluate("document.querySelector('section.shows p').textContent.length") > 80,
+              f"{what}: no 'what this shows' at the top")
+        links = page_links(page)
+        docs = [href for kind, _, href in links if kind == "doc"]
+        check(len(docs) == 1 and linked_file(docs[0]).name == lesson + ".md" and linked_file(docs[0]).is_file(),
+              f"{what}: no link to its chapter docs/{lesson}.md that opens: {docs}")
+        for kind, _, href in links:
+            if kind == "lab":
+                check(linked_file(href).is_file(), f"{what}: its lab link {href} names no file")
+        # The colour bars: every figure marked false colour has one that shows its
+        # values, and every false-colour PNG on the page is so marked.
+        figures = page.evaluate("""Array.from(document.querySelectorAll('figure')).map((f) => {
+            const bar = f.querySelector('.colour-bar');
+            return [f.querySelector('img').getAttribute('src'), f.classList.contains('false-colour'),
+                    bar ? bar.getBoundingClientRect().width : 0, bar ? bar.querySelectorAll('.ticks span').length : 0,
+                    bar ? bar.querySelector('.quantity').textContent : ''];
+        })""")
+        for src, marked, bar_width, ticks, quantity in figures:
+            if src.endswith(".png") and is_false_colour((out / lesson / src).read_bytes()):
+                check(marked, f"{what}: {src} is in false colour but has no colour bar")
+            if marked:
+                check(bar_width >= 200 and ticks >= 2 and quantity.strip(),
+                      f"{what}: {src}'s colour bar is {bar_width} px wide with {ticks} values, quantity '{quantity}'")
+        no_errors(page, what)
+        (out / f"page_{lesson}.png").write_bytes(page.full_page_screenshot(PAGE_WIDTH))
     page.open((out / "index.html").as_uri())
-    links = page.evaluate("Array.from(document.links).map((a) => a.getAttribute('href'))")
+    links = page_links(page)
+    hrefs = [href for _, href, _ in links]
     for lesson in LESSONS:
-        check(f"{lesson}/index.html" in links and f"{lesson}/viewer.html" in links,
-              f"out/index.html does not link {lesson}'s pages: {links}")
+        check(f"{lesson}/index.html" in hrefs, f"out/index.html does not link {lesson}'s page")
+        check(any(kind == "doc" and linked_file(url).name == lesson + ".md" and linked_file(url).is_file()
+                  for kind, _, url in links), f"out/index.html does not link {lesson}'s chapter")
+    for lesson in VIEWERS:
+        check(f"{lesson}/viewer.html" in hrefs, f"out/index.html does not link {lesson}'s viewer")
+    check(sum(kind == "lab" for kind, _, _ in links) >= 15, "out/index.html does not link every lab")
+    overflow = page.evaluate("document.documentElement.scrollWidth - window.innerWidth")
+    check(overflow <= 0, f"out/index.html: {overflow} px wider than a {PAGE_WIDTH} px window")
     no_errors(page, "out/index.html")
+    (out / "page_index.png").write_bytes(page.full_page_screenshot(PAGE_WIDTH))
 
 
 def open_viewer(browser, out, lesson):

@@ -182,6 +182,17 @@ class Page:
         return self.evaluate(f"(() => {{ const r = document.querySelector({json.dumps(selector)})"
                              ".getBoundingClientRect(); return [r.x, r.y, r.width, r.height]; })()")
 
+    def full_page_screenshot(self, width):
+        """The whole page, as tall as it is (at most 16 000 px): the window is made that
+        tall for the shot, then set back."""
+        height = min(self.evaluate("document.documentElement.scrollHeight"), 16000)
+        self.send("Emulation.setDeviceMetricsOverride",
+                  {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
+        shot = self.screenshot()
+        self.send("Emulation.setDeviceMetricsOverride",
+                  {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False})
+        return shot
+
     def screenshot(self, clip=None):
         params = {"format": "png", "captureBeyondViewport": clip is None}
         if clip:

@@ -10,6 +10,9 @@ TEST(Diff, BlackWhereEqualRedAtTheLargestDifference) {
   const gi::Image d = gi::difference_image(a, b);
   EXPECT_EQ(d.at(0, 0), gi::Pixel(0));
   EXPECT_EQ(d.at(2, 0), gi::Pixel(1, 0, 0));
+  // The value at red, for the picture's colour bar: |0.9 - 0.5| in every channel.
+  EXPECT_FLOAT_EQ(gi::largest_difference(a, b), 0.4f);
+  EXPECT_EQ(gi::largest_difference(a, a), 0.0);
 }
 
 TEST(Diff, FalseColourRamp) {

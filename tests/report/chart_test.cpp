@@ -26,6 +26,25 @@ TEST(Chart, LogTicksAreDecades) {
   EXPECT_EQ(gi::axis_ticks(0.003, 2, true), (std::vector<double>{1e-3, 1e-2, 1e-1, 1, 10}));
 }
 
+// A log axis over less than a few decades still carries several labelled ticks:
+// 16 to 37 ms once had only 10 and 100.
+TEST(Chart, ANarrowLogAxisGetsFinerTicks) {
+  const auto near = [](const std::vector<double>& got, const std::vector<double>& want) {
+    ASSERT_EQ(got.size(), want.size());
+    for (std::size_t i = 0; i < want.size(); ++i) EXPECT_NEAR(got[i], want[i], 1e-12 * want[i]) << i;
+  };
+  near(gi::axis_ticks(16, 37, true), {10, 20, 30, 40});
+  near(gi::axis_ticks(0.02, 3, true), {0.01, 0.1, 1, 10});
+  near(gi::axis_ticks(0.02, 0.7, true), {0.02, 0.05, 0.1, 0.2, 0.5, 1});
+  near(gi::axis_ticks(0.0011, 0.5, true), {1e-3, 1e-2, 1e-1, 1});
+  near(gi::axis_ticks(21, 24, true), {21, 21.5, 22, 22.5, 23, 23.5, 24});
+  gi::Chart chart{"t", "ms", "RMSE", true, true, {}};
+  chart.series.push_back({"a", {16, 37}, {0.02, 0.05}});
+  const std::string svg = gi::to_svg(chart);
+  for (const char* label : {">10<", ">20<", ">30<", ">40<", ">0.02<", ">0.03<", ">0.04<", ">0.05<"})
+    EXPECT_NE(svg.find(label), std::string::npos) << label;
+}
+
 TEST(Chart, OneLinePerSeriesLegendEscapedAndBadPointsSkipped) {
   gi::Chart chart{"Error <vs> time", "ms", "RMSE", false, true, {}};
   chart.series.push_back({"depth & more", {1, 2, 3}, {0.1, 0.0, 0.01}});  // 0 cannot sit on a log axis

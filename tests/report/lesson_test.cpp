@@ -167,15 +167,22 @@ TEST(Lesson, AFileThatVanishedBeforeTheEndIsAFailure) {
   EXPECT_NE(r.err.find("heat.png is missing"), std::string::npos) << r.err;
 }
 
-TEST(Lesson, ARunThatWasKilledLeavesNoRecordAndItsTemporariesAreCleared) {
+// While it runs, the record says "running" and names this process: a run killed now
+// leaves that, never the older run's "complete", nor its page.
+TEST(Lesson, ARunThatIsKilledLeavesARunningRecordAndItsTemporariesAreCleared) {
   const fs::path out = scratch("killed");
   fs::create_directories(out);
   std::ofstream(out / "outputs.json") << "{\"status\": \"complete\"}";  // an older run's record
+  std::ofstream(out / "index.html") << "an older run's page";
   std::ofstream(out / ".a.png.999999999.0.partial") << "half";          // a dead process's temporary
   const std::string alive = ".b.png." + std::to_string(gi::platform::current_process_id()) + ".0.partial";
   std::ofstream(out / alive) << "being written";
   const LessonRun r = run({"--out", out.string()}, [&](gi::Lesson&) {
-    EXPECT_FALSE(fs::exists(out / "outputs.json")) << "a run killed now must not leave the old record";
+    const std::string record = gi_test::file_text(out / "outputs.json");
+    EXPECT_NE(record.find("\"status\": \"running\""), std::string::npos) << record;
+    EXPECT_NE(record.find("\"process\": {\"id\": " + std::to_string(::getpid()) + ", \"started\": \""),
+              std::string::npos) << record;
+    EXPECT_FALSE(fs::exists(out / "index.html")) << "a run killed now must not leave the old page";
   });
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_FALSE(fs::exists(out / ".a.png.999999999.0.partial"));

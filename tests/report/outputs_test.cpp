@@ -42,3 +42,27 @@ TEST(Outputs, JsonOfEachKind) {
   EXPECT_NE(gi::outputs_json("x", {}, "complete", {nan_exposure}).find("\"exposure\": null"), std::string::npos);
   EXPECT_EQ(gi::kind_name(gi::OutputKind::Cache), "cache");
 }
+
+// A false-colour diagram records its size and what its colours mean; a record made
+// while the lesson runs names the process.
+TEST(Outputs, ColourScaleAndProcess) {
+  gi::Output heat;
+  heat.kind = gi::OutputKind::Diagram;
+  heat.caption = "F";
+  heat.file = "f.png";
+  heat.bytes = 10;
+  heat.width = 728, heat.height = 728;
+  heat.colour_scale = gi::ColourScale{1e-6, 0.5, "form factor F_ij", true};
+  EXPECT_EQ(gi::outputs_json("07_x", {}, "running", {heat}, {4242, "boot:99"}),
+            "{\n"
+            "  \"lesson\": \"07_x\",\n"
+            "  \"command\": [],\n"
+            "  \"status\": \"running\",\n"
+            "  \"process\": {\"id\": 4242, \"started\": \"boot:99\"},\n"
+            "  \"outputs\": [\n"
+            "    {\"kind\": \"diagram\", \"caption\": \"F\", \"file\": \"f.png\", \"bytes\": 10, \"width\": 728, "
+            "\"height\": 728, \"colour_scale\": {\"map\": \"black, blue, green, yellow, red\", \"lo\": 9.9999999999999995e-07, "
+            "\"hi\": 0.5, \"log10\": true, \"quantity\": \"form factor F_ij\"}}\n"
+            "  ]\n"
+            "}\n");
+}

@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <fstream>
 #include <thread>
 #include <vector>
@@ -15,6 +19,7 @@
 #include "gi/report/lessons_index.hpp"
 #include "gi/report/outputs.hpp"
 #include "gi/report/page_assets.hpp"
+#include "gi/report/run_process.hpp"
 #include "gi/report/table.hpp"
 
 namespace {
@@ -74,17 +79,20 @@ TEST(ReportPage, ShowsEveryOutputInTheOrderItWasMade) {
   const gi::Output chart = output(gi::OutputKind::Chart, "error against time", "error.svg");
   const gi::Output viewer = output(gi::OutputKind::Viewer, "shots replayed", "viewer.html");
   const gi::Output script = output(gi::OutputKind::Page, "copied", "viewer_main.js");
-  const std::string page = gi::report_page({"11_progressive", "Shooting.", "complete", {"./11_progressive"}, true},
+  const std::string page = gi::report_page({"11_progressive", "Shooting.", "complete", {"./11_progressive"}, true, {}, {}},
                                            {text("first line"), text("second line"), table(), picture(), chart,
                                             text("last line"), viewer, script});
   // Consecutive lines are one <pre> block, as on the terminal.
   const std::size_t first = at(page, "<pre>first line\nsecond line\n</pre>");
   const std::size_t tab = at(page, "<table>");
-  const std::size_t pic = at(page, "<img src=\"box.png\" alt=\"the box\" width=\"64\" height=\"48\">");
+  // A 64-pixel picture is shown five times as wide, pixel for pixel.
+  const std::size_t pic = at(page, "<img src=\"box.png\" alt=\"the box\" width=\"320\" height=\"240\">");
   const std::size_t svg = at(page, "<img src=\"error.svg\"");
   const std::size_t last = at(page, "<pre>last line\n</pre>");
   const std::size_t view = at(page, "<a href=\"viewer.html\">Open the interactive viewer</a>");
   EXPECT_TRUE(first < tab && tab < pic && pic < svg && svg < last && last < view);
+  // The viewer is also one click from the top of the page.
+  EXPECT_LT(at(page, "<a class=\"viewer-link\" href=\"viewer.html\">"), first);
   // The table's cells as the terminal printed them, numbers aligned right, text escaped.
   at(page, "<caption>Errors &lt;by&gt; method");
   at(page, "<tr><td>Gauss &amp; Seidel</td><td class=\"number\">0.062</td></tr>");
@@ -97,9 +105,72 @@ TEST(ReportPage, ShowsEveryOutputInTheOrderItWasMade) {
   at(page, "<p class=\"status complete\">complete</p>");
 }
 
+// The top of the page says what the lesson shows, from its doc, and links the doc and
+// the lab from where the page is.
+TEST(ReportPage, OpensWithWhatTheLessonShowsAndLinksItsChapterAndLab) {
+  gi::LessonGuide guide{"07_x", "07 — The hemicube", "docs/07_x.md", "exercises/lab07/README.md",
+                        "A *cube* of `cells` and [a link](other.md) & more."};
+  const gi::RunSummary run{"07_x", "unused", "complete", {"./07_x"}, true, gi::source_file("out/07_x"), guide};
+  const std::string page = gi::report_page(run, {text("line")});
+  at(page, "<h1>07 — The hemicube</h1>");
+  at(page, "<h2>What this shows</h2>\n<p>A <em>cube</em> of <code>cells</code> and a link &amp; more.</p>");
+  at(page, "<a class=\"doc\" href=\"../../docs/07_x.md\">Read the chapter: docs/07_x.md</a>");
+  at(page, "<a class=\"lab\" href=\"../../exercises/lab07/README.md\">The lab: exercises/lab07/README.md</a>");
+  EXPECT_EQ(page.find("unused"), std::string::npos) << "the doc's opening stands in for the summary";
+  // Without a lab, no lab link.
+  guide.lab.clear();
+  EXPECT_EQ(gi::report_page({"07_x", "", "complete", {}, false, ".", guide}, {}).find("class=\"lab\""),
+            std::string::npos);
+}
+
+// Pictures made one after another sit side by side in one gallery; a false-colour
+// one carries its colour bar: the ramp, the values at its ends and between, and the
+// quantity with its unit.
+TEST(ReportPage, PicturesSideBySideAndFalseColourOverItsBar) {
+  gi::Output heat = output(gi::OutputKind::Diagram, "rays per pixel", "heat.png");
+  heat.width = 200, heat.height = 100;
+  heat.colour_scale = gi::ColourScale{0, 94, "eye rays per pixel"};
+  gi::Output matrix = output(gi::OutputKind::Diagram, "F", "matrix.png");
+  matrix.width = matrix.height = 728;
+  matrix.colour_scale = gi::ColourScale{1e-6, 0.1, "form factor F_ij", true};
+  gi::Output strip = output(gi::OutputKind::Diagram, "a strip", "strip.png");
+  strip.width = 1400, strip.height = 128;
+  const std::string page = gi::report_page({"x", "", "complete", {}, false, {}, {}}, {picture(), heat, matrix, text("then"), strip});
+  const std::size_t gallery = at(page, "<div class=\"gallery\">");
+  EXPECT_LT(gallery, at(page, "box.png"));
+  EXPECT_LT(at(page, "matrix.png"), at(page, "</div>\n<pre>then"));
+  // The heat map is shown at up to twice its width, its bar as wide as it.
+  at(page, "<figure class=\"false-colour\" style=\"max-width: 400px\"><img src=\"heat.png\"");
+  at(page, "width=\"400\" height=\"200\">\n<div class=\"colour-bar\" title=");
+  at(page, "linear-gradient(to right, rgb(0 0 0), rgb(0 0 255), rgb(0 255 0), rgb(255 255 0), rgb(255 0 0))");
+  for (const char* tick : {">0</span>", ">20</span>", ">40</span>", ">60</span>", ">94</span>"})
+    at(page, tick);
+  EXPECT_EQ(page.find(">80</span>"), std::string::npos) << "a value this close to the end would crowd it";
+  at(page, "<div class=\"quantity\">eye rays per pixel</div>");
+  // The log scale's ticks are its decades.
+  for (const char* tick : {">10<sup>-6</sup>", ">10<sup>-4</sup>", ">10<sup>-1</sup>"}) at(page, tick);
+  at(page, "form factor F_ij (log scale)");
+  // A strip wider than the page: a row of its own, shown as it is and scaled down by
+  // the style sheet; no bar.
+  at(page, "<figure class=\"strip\" style=\"max-width: 1400px\"><img src=\"strip.png\" alt=\"a strip\" width=\"1400\" height=\"128\">");
+  std::size_t bars = 0;
+  for (std::size_t p = page.find("class=\"colour-bar\""); p != std::string::npos; p = page.find("class=\"colour-bar\"", p + 1))
+    ++bars;
+  EXPECT_EQ(bars, 2u);
+}
+
+TEST(ReportPage, ShownWidthEnlargesSmallPicturesByWholeFactors) {
+  EXPECT_EQ(gi::shown_width(128), 384);
+  EXPECT_EQ(gi::shown_width(16), 320);
+  EXPECT_EQ(gi::shown_width(320), 320);
+  EXPECT_EQ(gi::shown_width(640), 640);
+  EXPECT_EQ(gi::shown_width(2000), 2000);  // the style sheet fits it to the page
+  EXPECT_EQ(gi::shown_width(0), 0);
+}
+
 TEST(ReportPage, IsStaticAndEscapesWhatItQuotes) {
   const std::string page = gi::report_page(
-      {"01_x", "A <b>bold</b> summary.", "failed: 01_x: error: <disk full>", {"./01_x", "--out", "my out", "--note", "it's"}},
+      {"01_x", "A <b>bold</b> summary.", "failed: 01_x: error: <disk full>", {"./01_x", "--out", "my out", "--note", "it's"}, false, {}, {}},
       {text("<script>alert(1)</script>")});
   EXPECT_EQ(page.find("<script"), std::string::npos) << "the page runs no script";
   EXPECT_EQ(page.find("http"), std::string::npos) << "the page fetches nothing";
@@ -132,14 +203,72 @@ TEST(LessonsIndex, ListsEveryRecordInFolderOrderAndSaysWhichCannotBeRead) {
   const std::size_t a = at(page, ">08_a</td>"), b = at(page, ">09_b</td>"), c = at(page, ">10_c</td>");
   EXPECT_TRUE(a < b && b < c);
   at(page, "<td class=\"failed\">failed: 09_b: error: diverged</td>");
-  at(page, "<td class=\"failed\" colspan=\"4\">outputs.json is not valid JSON</td>");
-  at(page, "<code>./08_a --width 8</code>");
+  at(page, "<td class=\"failed\">outputs.json is not valid JSON</td>");
+  at(page, "<td class=\"complete\">complete</td>");
   EXPECT_EQ(page.find("11_no_record"), std::string::npos);
   // A lesson with its page is linked; these have none.
   EXPECT_EQ(page.find("href=\"08_a/index.html\""), std::string::npos);
   std::ofstream(out / "08_a" / "index.html") << "page";
   gi::update_lessons_index(out);
   at(gi_test::file_text(out / "index.html"), "<a href=\"08_a/index.html\">08_a</a>");
+}
+
+// The index is the course's table of contents: every lesson with a doc has its row,
+// its title, the first sentence of what it shows and links to its chapter and lab,
+// whether or not it has run.
+TEST(LessonsIndex, ListsEveryLessonOfTheCourseWithItsChapterAndLab) {
+  const fs::path out = scratch("contents");
+  record(out, "01_rays", "complete");
+  std::ofstream(out / "01_rays" / "index.html") << "page";
+  const std::string page = gi::lessons_index_page(out);
+  for (const gi::PageAsset& doc : gi::doc_openings()) {
+    const gi::LessonGuide guide = gi::read_guide(doc.contents, doc.name);
+    at(page, gi::html_escape(guide.title));
+    at(page, gi::html_escape(gi::first_sentence(guide.shows)));
+    at(page, "href=\"" + gi::source_link(out, guide.doc) + "\"");
+    if (!guide.lab.empty()) at(page, "href=\"" + gi::source_link(out, guide.lab) + "\"");
+  }
+  EXPECT_GE(gi::doc_openings().size(), 16u);
+  const auto rays = gi::lesson_guide("01_rays");
+  ASSERT_TRUE(rays);
+  at(page, "<a href=\"01_rays/index.html\">" + gi::html_escape(rays->title) + "</a>");
+  at(page, "<td class=\"pending\">not run yet</td>");
+}
+
+// A run killed with -9 leaves its record saying "running": the index shows it as
+// running while its process lives and as killed once it is gone, never as complete.
+TEST(LessonsIndex, ARunWhoseProcessIsGoneIsShownKilled) {
+  const fs::path out = scratch("killed");
+  const auto running = [&](const std::string& name, const gi::RunProcess& process) {
+    gi::write_atomically(out / name / "outputs.json", [&](std::ostream& o) {
+      o << gi::outputs_json(name, {"./" + name}, "running", {}, process);
+    });
+  };
+  running("20_alive", gi::this_process());
+  // A process that has ended: a child that exits at once, reaped.
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) _exit(0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  gi::RunProcess dead{child, ""};
+  waitpid(child, nullptr, 0);
+  running("21_dead", dead);
+  // Our own id with another start: the id of a killed run, given to a new process.
+  running("22_reused", {gi::this_process().id, gi::this_process().started + "0"});
+  const std::string page = gi::lessons_index_page(out);
+  const std::size_t alive = at(page, ">20_alive</td>"), gone = at(page, ">21_dead</td>"), reused = at(page, ">22_reused</td>");
+  EXPECT_NE(page.find("<td class=\"pending\">running</td>", alive), std::string::npos);
+  EXPECT_LT(page.find("<td class=\"failed\">killed before it finished: run it again</td>", gone), reused);
+  EXPECT_NE(page.find("<td class=\"failed\">killed before it finished: run it again</td>", reused), std::string::npos);
+  EXPECT_EQ(page.find(">complete<"), std::string::npos);
+}
+
+TEST(RunProcess, ThisOneIsRunningAndHasAStamp) {
+  const gi::RunProcess self = gi::this_process();
+  EXPECT_EQ(self.id, static_cast<long>(::getpid()));
+  EXPECT_FALSE(self.started.empty()) << "Linux gives each process a start time in /proc";
+  EXPECT_TRUE(gi::still_running(self));
+  EXPECT_FALSE(gi::still_running({}));
 }
 
 TEST(LessonsIndex, LessonsFinishingTogetherAreAllListed) {

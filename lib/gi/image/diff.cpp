@@ -10,11 +10,22 @@ namespace {
 
 // Piecewise-linear colour ramp through black, blue, green, yellow and red.
 Pixel ramp(double v) {
-  static const Pixel stops[] = {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}};
+  const auto& stops = false_colour_stops;
   const double x = std::clamp(v, 0.0, 1.0) * 4.0;
   const int i = std::min(3, static_cast<int>(x));
   const float f = static_cast<float>(x - i);
   return (1.0f - f) * stops[i] + f * stops[i + 1];
+}
+
+// |a - b| per pixel, the mean over the channels.
+std::vector<double> differences(const Image& a, const Image& b) {
+  if (!a.same_size(b)) throw std::invalid_argument("difference_image: the images must have the same size");
+  std::vector<double> diff(a.pixels.size());
+  for (std::size_t i = 0; i < diff.size(); ++i) {
+    const Pixel d = glm::abs(a.pixels[i] - b.pixels[i]);
+    diff[i] = (double(d.x) + d.y + d.z) / 3.0;
+  }
+  return diff;
 }
 
 }  // namespace
@@ -28,14 +39,14 @@ Image false_colour(const std::vector<double>& values, int width, int height, dou
 }
 
 Image difference_image(const Image& a, const Image& b, double scale) {
-  if (!a.same_size(b)) throw std::invalid_argument("difference_image: the images must have the same size");
-  std::vector<double> diff(a.pixels.size());
-  for (std::size_t i = 0; i < diff.size(); ++i) {
-    const Pixel d = glm::abs(a.pixels[i] - b.pixels[i]);
-    diff[i] = (double(d.x) + d.y + d.z) / 3.0;
-  }
+  const std::vector<double> diff = differences(a, b);
   if (scale <= 0) scale = *std::max_element(diff.begin(), diff.end());
   return false_colour(diff, a.width, a.height, 0.0, scale > 0 ? scale : 1.0);
+}
+
+double largest_difference(const Image& a, const Image& b) {
+  const std::vector<double> diff = differences(a, b);
+  return diff.empty() ? 0.0 : *std::max_element(diff.begin(), diff.end());
 }
 
 Image crop(const Image& image, int x, int y, int w, int h) {

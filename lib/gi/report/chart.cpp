@@ -34,9 +34,12 @@ std::string num(double v) {  // fixed formatting, independent of the locale
   return buffer;
 }
 
+// Ticks of everyday size read as %g (0.02, 300); on a log axis the very small and
+// very large as 2e-5, 1e6.
 std::string tick_label(double v, bool log) {
   char buffer[32];
-  if (log) std::snprintf(buffer, sizeof buffer, "1e%d", static_cast<int>(std::lround(std::log10(v))));
+  const int e = static_cast<int>(std::floor(std::log10(std::abs(v)) + 1e-9));
+  if (log && (e < -3 || e > 4)) std::snprintf(buffer, sizeof buffer, "%.3ge%d", v / std::pow(10.0, e), e);
   else std::snprintf(buffer, sizeof buffer, "%g", std::abs(v) < 1e-12 ? 0.0 : v);
   return buffer;
 }
@@ -72,13 +75,39 @@ Axis make_axis(const Chart& chart, bool x_axis) {
 
 }  // namespace
 
-std::vector<double> axis_ticks(double lo, double hi, bool log) {
+namespace {
+
+// The values m 10^e (m from `mantissas`) from the largest at or below lo to the
+// smallest at or above hi.
+std::vector<double> log_ticks(double lo, double hi, const std::vector<int>& mantissas) {
+  std::vector<double> all;
+  for (int e = static_cast<int>(std::floor(std::log10(lo))) - 1; e <= static_cast<int>(std::ceil(std::log10(hi))); ++e)
+    for (int m : mantissas) all.push_back(m * std::pow(10.0, e));
   std::vector<double> ticks;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const bool below = i + 1 < all.size() && all[i + 1] <= lo * (1 + 1e-12);
+    const bool above = i > 0 && all[i - 1] >= hi * (1 - 1e-12);
+    if (!below && !above) ticks.push_back(all[i]);
+  }
+  return ticks;
+}
+
+}  // namespace
+
+std::vector<double> axis_ticks(double lo, double hi, bool log) {
   if (log) {
-    for (int e = static_cast<int>(std::floor(std::log10(lo))); e <= static_cast<int>(std::ceil(std::log10(hi))); ++e)
-      ticks.push_back(std::pow(10.0, e));
+    // Decades when they give four ticks or more; over a narrower range 1-2-5, then
+    // every digit, then plain steps, so that a log axis always carries a few labels.
+    for (const std::vector<int>& mantissas : {std::vector<int>{1}, {1, 2, 5}, {1, 2, 3, 4, 5, 6, 7, 8, 9}}) {
+      std::vector<double> ticks = log_ticks(lo, hi, mantissas);
+      if (ticks.size() >= 4) return ticks;
+    }
+    std::vector<double> ticks;
+    for (double t : axis_ticks(lo, hi, false))
+      if (t > 0) ticks.push_back(t);
     return ticks;
   }
+  std::vector<double> ticks;
   // The smallest step of the form {1, 2, 5} x 10^k that gives at most 8 intervals.
   const double raw = (hi - lo) / 8;
   const double decade = std::pow(10.0, std::floor(std::log10(raw)));
@@ -109,20 +138,29 @@ std::string to_svg(const Chart& chart, int width, int height) {
      << "<text x=\"" << num(std::max((left + right) / 2, 4.0 * chart.title.size() + 10))
      << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
      << escape(chart.title) << "</text>\n";
-  // Grid lines and tick labels.
+  // Grid lines at every tick; a label where it does not crowd the last one (40 px
+  // apart along x, 16 along y).
+  double last = -1e9;
   for (double t : axis_ticks(ax.lo, ax.hi, ax.log)) {
     if (t < ax.lo * (1 - 1e-9) - 1e-12 || t > ax.hi * (1 + 1e-9) + 1e-12) continue;
     const double x = ax.map(t, left, right);
     os << "<line x1=\"" << num(x) << "\" y1=\"" << num(top) << "\" x2=\"" << num(x) << "\" y2=\"" << num(bottom)
-       << "\" stroke=\"#ddd\"/>\n<text x=\"" << num(x) << "\" y=\"" << num(bottom + 16)
-       << "\" text-anchor=\"middle\">" << tick_label(t, ax.log) << "</text>\n";
+       << "\" stroke=\"#ddd\"/>\n";
+    if (x - last < 40) continue;
+    last = x;
+    os << "<text x=\"" << num(x) << "\" y=\"" << num(bottom + 16) << "\" text-anchor=\"middle\">"
+       << tick_label(t, ax.log) << "</text>\n";
   }
+  last = 1e9;
   for (double t : axis_ticks(ay.lo, ay.hi, ay.log)) {
     if (t < ay.lo * (1 - 1e-9) - 1e-12 || t > ay.hi * (1 + 1e-9) + 1e-12) continue;
     const double y = ay.map(t, bottom, top);
     os << "<line x1=\"" << num(left) << "\" y1=\"" << num(y) << "\" x2=\"" << num(right) << "\" y2=\"" << num(y)
-       << "\" stroke=\"#ddd\"/>\n<text x=\"" << num(left - 6) << "\" y=\"" << num(y + 4)
-       << "\" text-anchor=\"end\">" << tick_label(t, ay.log) << "</text>\n";
+       << "\" stroke=\"#ddd\"/>\n";
+    if (last - y < 16) continue;
+    last = y;
+    os << "<text x=\"" << num(left - 6) << "\" y=\"" << num(y + 4) << "\" text-anchor=\"end\">"
+       << tick_label(t, ay.log) << "</text>\n";
   }
   os << "<rect x=\"" << num(left) << "\" y=\"" << num(top) << "\" width=\"" << num(right - left) << "\" height=\""
      << num(bottom - top) << "\" fill=\"none\" stroke=\"black\"/>\n"

@@ -20,15 +20,16 @@ struct Chart {
   std::vector<Series> series;
 };
 
-// SVG text of the chart: axes with 1-2-5 ticks (decades on log axes), labels,
-// title and a legend. Points that are not finite, or not positive on a log axis,
+// SVG text of the chart: axes with 1-2-5 ticks (on log axes decades, or 1-2-5 and
+// every digit of a decade when it spans fewer than four), labels, title and a legend. Points that are not finite, or not positive on a log axis,
 // are left out.
 std::string to_svg(const Chart& chart, int width = 720, int height = 480);
 // Creates parent folders; atomic (gi/core/atomic_file.hpp); throws WriteError.
 void write_svg(const Chart& chart, const std::filesystem::path& file, int width = 720, int height = 480);
 
-// Tick positions covering [lo, hi]: 1-2-5 steps on a linear axis, powers of ten on
-// a log axis (lo > 0 there).
+// Tick positions covering [lo, hi]: 1-2-5 steps on a linear axis; on a log axis
+// (lo > 0 there) powers of ten when four or more cover the range, else 1-2-5 x 10^k,
+// else 1..9 x 10^k, else linear steps: never fewer than a few labels.
 std::vector<double> axis_ticks(double lo, double hi, bool log);
 
 }  // namespace gi

@@ -9,9 +9,11 @@
 #include "gi/core/not_implemented.hpp"
 #include "gi/core/platform/process.hpp"
 #include "gi/image/image_io.hpp"
+#include "gi/report/lesson_guide.hpp"
 #include "gi/report/lessons_index.hpp"
 #include "gi/report/page_assets.hpp"
 #include "gi/report/report_page.hpp"
+#include "gi/report/run_process.hpp"
 #include "gi/scene/builtin_scenes.hpp"
 #include "gi/scene/scene_file.hpp"
 #include "gi/scene/utf8.hpp"
@@ -136,10 +138,22 @@ void Lesson::prepare_folder() {
   }
   for (const fs::directory_entry& entry : fs::directory_iterator(out_, error))
     if (abandoned(entry.path())) fs::remove(entry.path(), error);
-  // The record of an earlier run would describe files this run may not write: a run
-  // that is killed leaves no record, rather than a wrong one, and no page of it.
+  // The record of an earlier run would describe files this run may not write, and its
+  // page would show them: both go, and the record this run writes first says
+  // "running", with the process, until the run ends. A run that is killed leaves that
+  // record, which the index of lessons shows as killed once the process is gone.
   fs::remove(out_ / "outputs.json", error);
   fs::remove(out_ / "index.html", error);
+}
+
+// The folder above holds an index of lessons when this folder is named after the
+// lesson, as out/<lesson> is: a folder given by --out under another name may sit
+// anywhere (/tmp), and no index is written beside it.
+std::optional<fs::path> Lesson::index_folder() const {
+  const fs::path folder = fs::absolute(out_).lexically_normal();
+  const fs::path named = folder.has_filename() ? folder : folder.parent_path();
+  if (named.filename() != name_) return std::nullopt;
+  return named.parent_path();
 }
 
 int Lesson::run(int argc, const char* const* argv, const std::function<void()>& body) {
@@ -152,6 +166,8 @@ int Lesson::run(int argc, const char* const* argv, const std::function<void()>& 
     for (const auto& check : checks_) check();
     prepare_folder();
     started = true;
+    write_record("running");
+    if (const auto index = index_folder()) update_lessons_index(*index);
     body();
     check_outputs();
   } catch (...) {
@@ -186,20 +202,16 @@ void Lesson::check_outputs() const {
 }
 
 void Lesson::write_record(const std::string& status) const {
-  const std::string json = outputs_json(name_, command_, status, outputs_);
+  const std::string json = outputs_json(name_, command_, status, outputs_, this_process());
   write_atomically(out_ / "outputs.json", [&](std::ostream& out) { out << json; });
 }
 
-// The folder above holds an index of lessons when this folder is named after the
-// lesson, as out/<lesson> is: a folder given by --out under another name may sit
-// anywhere (/tmp), and no index is written beside it.
 void Lesson::write_pages(const std::string& status) const {
-  const fs::path folder = fs::absolute(out_).lexically_normal();
-  const fs::path named = folder.has_filename() ? folder : folder.parent_path();
-  const bool in_index = named.filename() == name_;
-  const std::string page = report_page({name_, options_.summary(), status, command_, in_index}, outputs_);
+  const std::optional<fs::path> index = index_folder();
+  const std::string page = report_page(
+      {name_, options_.summary(), status, command_, index.has_value(), out_, lesson_guide(name_)}, outputs_);
   write_atomically(out_ / "index.html", [&](std::ostream& out) { out << page; });
-  if (in_index) update_lessons_index(named.parent_path());
+  if (index) update_lessons_index(*index);
 }
 
 void Lesson::picture(const Image& radiance, const std::string& stem, const std::string& caption, const View& view,
@@ -217,6 +229,14 @@ void Lesson::picture(const Image& radiance, const std::string& stem, const std::
 
 void Lesson::diagram(const Image& image, const std::string& stem, const std::string& caption, double exposure) {
   file(stem + ".png", OutputKind::Diagram, caption, [&](const fs::path& p) { write_png(image, p, exposure); });
+  outputs_.back().width = image.width;
+  outputs_.back().height = image.height;
+}
+
+void Lesson::diagram(const Image& image, const std::string& stem, const std::string& caption,
+                     const ColourScale& scale) {
+  diagram(image, stem, caption);
+  outputs_.back().colour_scale = scale;
 }
 
 void Lesson::table(const Table& table, const std::string& stem) {

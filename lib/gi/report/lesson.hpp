@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,10 +56,12 @@ class Lesson {
   void add_scene_changes(SceneChanges& changes);
 
   // Parses the command line, runs the checks, makes sure the output folder can be
-  // created and written, runs `body`, then checks that every file it wrote is in
-  // place and writes outputs.json and the report page, index.html, made from it
-  // (report_page.hpp); a folder named after the lesson (out/08_radiosity_system)
-  // also updates the index of lessons in the folder above (lessons_index.hpp).
+  // created and written, writes outputs.json saying "running" (with this process),
+  // runs `body`, then checks that every file it wrote is in place and writes
+  // outputs.json again with the outcome and the report page, index.html, made from
+  // it (report_page.hpp); a folder named after the lesson (out/08_radiosity_system)
+  // also updates the index of lessons in the folder above (lessons_index.hpp), at
+  // the start and at the end.
   // Returns the exit status:
   //   0  done, every file written is in place (also after --help)
   //   1  a failure while running: an error, a full disk, a file missing at the end
@@ -78,8 +81,12 @@ class Lesson {
   // `shown`, when given, is what the PNG shows instead (display.hpp's white clamp).
   void picture(const Image& radiance, const std::string& stem, const std::string& caption, const View& view,
                double exposure = 1, const Image* shown = nullptr);
-  // A PNG that is not a view of radiance (false colour, heat maps, crops and strips).
+  // A PNG that is not a view of radiance (crops and strips, an item buffer).
   void diagram(const Image& image, const std::string& stem, const std::string& caption, double exposure = 1);
+  // A false-colour PNG (false_colour, difference_image): `scale` says what its colours
+  // mean -- the values at black and red, the quantity and its unit -- and the report
+  // page draws it as a colour bar beneath the picture.
+  void diagram(const Image& image, const std::string& stem, const std::string& caption, const ColourScale& scale);
   // Prints the table on stdout and writes stem.csv.
   void table(const Table& table, const std::string& stem);
   void chart(const Chart& chart, const std::string& stem);  // stem.svg
@@ -100,6 +107,7 @@ class Lesson {
  private:
   std::filesystem::path path(const std::string& name) const { return out_ / name; }
   void prepare_folder();
+  std::optional<std::filesystem::path> index_folder() const;
   void check_outputs() const;
   void write_record(const std::string& status) const;
   void write_pages(const std::string& status) const;

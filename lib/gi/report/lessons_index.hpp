@@ -4,10 +4,13 @@
 
 namespace gi {
 
-// out/index.html: one row per lesson that has run under `folder` -- each subfolder
-// holding an outputs.json -- with its status, its command line and links to its
-// report page and its viewer. Made from the records alone, so it shows every lesson
-// run so far, in folder order. A record that cannot be read is a row that says so.
+// out/index.html, the course's table of contents: one row per lesson (every lesson
+// with a doc, then any other subfolder of `folder` holding an outputs.json), in
+// folder order, with its title linked to its report page, the first sentence of what
+// it shows, its status -- "not run yet", "running", "complete", the error that
+// stopped it, or "killed" for a record still saying "running" whose process is gone
+// (run_process.hpp) -- and links to its chapter, its lab and its viewer. Made from
+// the records alone; a record that cannot be read is a row that says so.
 std::string lessons_index_page(const std::filesystem::path& folder);
 
 // Writes lessons_index_page(folder) to folder/index.html atomically, holding an

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "gi/image/diff.hpp"
+
 namespace gi {
 
 std::string kind_name(OutputKind kind) {
@@ -57,14 +59,22 @@ std::string view_json(const View& view) {
          ", \"projection\": \"pinhole; pixel (x, y) spans [x, x+1] x [y, y+1] of the image plane, row 0 at the top\"}";
 }
 
+std::string scale_json(const ColourScale& s) {
+  return "{\"map\": " + quoted(false_colour_map_name) + ", \"lo\": " + number(s.lo) + ", \"hi\": " + number(s.hi) +
+         ", \"log10\": " + (s.log10 ? "true" : "false") + ", \"quantity\": " + quoted(s.quantity) + "}";
+}
+
 }  // namespace
 
 std::string outputs_json(const std::string& lesson, const std::vector<std::string>& command, const std::string& status,
-                         const std::vector<Output>& outputs) {
+                         const std::vector<Output>& outputs, const RunProcess& process) {
   std::ostringstream os;
   os << "{\n  \"lesson\": " << quoted(lesson) << ",\n  \"command\": [";
   for (std::size_t i = 0; i < command.size(); ++i) os << (i ? ", " : "") << quoted(command[i]);
-  os << "],\n  \"status\": " << quoted(status) << ",\n  \"outputs\": [";
+  os << "],\n  \"status\": " << quoted(status) << ",\n";
+  if (process.id != 0)
+    os << "  \"process\": {\"id\": " << process.id << ", \"started\": " << quoted(process.started) << "},\n";
+  os << "  \"outputs\": [";
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const Output& o = outputs[i];
     os << (i ? "," : "") << "\n    {\"kind\": " << quoted(kind_name(o.kind)) << ", \"caption\": " << quoted(o.caption);
@@ -72,6 +82,9 @@ std::string outputs_json(const std::string& lesson, const std::vector<std::strin
     if (o.kind == OutputKind::Picture)
       os << ", \"linear\": " << quoted(o.linear.generic_string()) << ", \"exposure\": " << number(o.exposure)
          << ", \"view\": " << view_json(o.view);
+    if (o.kind == OutputKind::Diagram && o.width > 0)
+      os << ", \"width\": " << o.width << ", \"height\": " << o.height;
+    if (o.colour_scale) os << ", \"colour_scale\": " << scale_json(*o.colour_scale);
     os << "}";
   }
   os << "\n  ]\n}\n";

@@ -19,6 +19,18 @@ struct View {
   std::string pixel_samples;  // "one eye ray through the pixel centre", "4 x 4 jittered, box filter" ...
 };
 
+// How a false-colour diagram maps values to colours: the ramp of image/diff.hpp's
+// false_colour, black at `lo`, red at `hi` (lo above hi gives a bar that runs
+// downwards, as "near is red" does), linear in the quantity or, with `log10`, in its
+// logarithm (lo and hi are then the quantity's own values, 1e-6 and 0.1, not their
+// exponents). `quantity` names what the colour shows, with its unit: the report page
+// draws the bar beneath the picture with it.
+struct ColourScale {
+  double lo = 0, hi = 1;
+  std::string quantity;
+  bool log10 = false;
+};
+
 // What a lesson printed and wrote, in order: the record a report page is built from.
 enum class OutputKind {
   Text,     // a line printed on stdout
@@ -43,12 +55,23 @@ struct Output {
   std::uintmax_t linear_bytes = 0;
   double exposure = 1;          // Picture: the PNG shows clamp(exposure * radiance)
   View view;                    // Picture
+  int width = 0, height = 0;    // Diagram: the PNG's size in pixels (a Picture's is in its view)
+  std::optional<ColourScale> colour_scale;  // Diagram in false colour
   std::optional<TableText> table;  // Table: its cells as printed, for the report page (not in the JSON)
 };
 
+// Who writes a lesson's folder while it runs: the process id and a stamp of when that
+// process started (run_process.hpp), so that a later reader can tell a run still going
+// from one that was killed, whose id the system may since have given to another.
+struct RunProcess {
+  long id = 0;
+  std::string started;
+};
+
 // The record as JSON (outputs.json in the lesson's folder): the lesson, its command
-// line, whether it completed (or the error that stopped it) and every output.
+// line, its status -- "running" from the start (with the process), then "complete",
+// or the error that stopped it -- and every output.
 std::string outputs_json(const std::string& lesson, const std::vector<std::string>& command, const std::string& status,
-                         const std::vector<Output>& outputs);
+                         const std::vector<Output>& outputs, const RunProcess& process = {});
 
 }  // namespace gi

@@ -1,7 +1,12 @@
 #include "gi/report/report_page.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <utility>
+
+#include "gi/image/diff.hpp"
 
 #include "gi/report/page_assets.hpp"
 
@@ -55,6 +60,20 @@ std::string shell_command(const std::vector<std::string>& command) {
   return out;
 }
 
+int shown_width(int width) {
+  if (width <= 0) return 0;
+  const int factor = std::max(1, std::min(1100 / width, (320 + width - 1) / width));
+  return width * factor;
+}
+
+std::string source_link(const std::filesystem::path& folder, const std::string& relative) {
+  const std::filesystem::path file = source_file(relative);
+  std::error_code error;
+  const std::filesystem::path from = std::filesystem::absolute(folder, error).lexically_normal();
+  const std::filesystem::path link = file.lexically_relative(from);
+  return url_path((link.empty() ? file : link).generic_string());
+}
+
 namespace {
 
 std::string number(double v, int digits = 4) {
@@ -82,10 +101,10 @@ std::string picture_details(const Output& o) {
 }
 
 void table_html(std::ostream& os, const Output& o) {
-  os << "<table>\n<caption>" << html_escape(o.caption) << " <span class=\"file\">" << link(o.file)
+  os << "<div class=\"table\"><table>\n<caption>" << html_escape(o.caption) << " <span class=\"file\">" << link(o.file)
      << "</span></caption>\n";
   if (!o.table) {
-    os << "</table>\n";
+    os << "</table></div>\n";
     return;
   }
   const TableText& t = *o.table;
@@ -99,23 +118,117 @@ void table_html(std::ostream& os, const Output& o) {
       os << (t.numeric[c] ? "<td class=\"number\">" : "<td>") << html_escape(row[c]) << "</td>";
     os << "</tr>\n";
   }
-  os << "</tbody>\n</table>\n";
+  os << "</tbody>\n</table></div>\n";
 }
 
-void figure_html(std::ostream& os, const Output& o, const std::string& details, int width = 0, int height = 0) {
-  os << "<figure><img src=\"" << html_escape(url_path(o.file.generic_string())) << "\" alt=\""
-     << html_escape(o.caption) << "\"";
-  if (width > 0) os << " width=\"" << width << "\" height=\"" << height << "\"";
-  os << "><figcaption>" << html_escape(o.caption) << " <span class=\"file\">" << details << "</span></figcaption></figure>\n";
+// Tick values for a colour bar over [a, b] (either order): steps of {1, 2, 5} x 10^k
+// giving at most five intervals, or on a log scale the powers of ten between.
+std::vector<double> bar_ticks(double a, double b, bool log) {
+  const double lo = std::min(a, b), hi = std::max(a, b);
+  std::vector<double> ticks;
+  if (!(hi > lo)) return ticks;
+  if (log) {
+    for (int e = static_cast<int>(std::ceil(std::log10(lo) - 1e-9)); e <= std::floor(std::log10(hi) + 1e-9); ++e)
+      ticks.push_back(std::pow(10.0, e));
+    return ticks;
+  }
+  const double raw = (hi - lo) / 5, decade = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = 10 * decade;
+  for (double m : {1.0, 2.0, 5.0})
+    if (m * decade >= raw) {
+      step = m * decade;
+      break;
+    }
+  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step)
+    ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
+  return ticks;
 }
+
+// A colour bar's value, short: 0.25, 94, 1.27e-4 (no leading zeros in the exponent).
+std::string short_number(double v) {
+  if (v == 0 || (std::abs(v) >= 1e-3 && std::abs(v) < 1e5)) return number(v, 3);
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", v);
+  std::string text = buffer;
+  const std::size_t e = text.find('e');
+  if (e == std::string::npos) return text;
+  std::string mantissa = text.substr(0, e), exponent = text.substr(e + 1);
+  const bool negative = exponent[0] == '-';
+  exponent = exponent.substr(exponent[0] == '-' || exponent[0] == '+' ? 1 : 0);
+  while (exponent.size() > 1 && exponent[0] == '0') exponent.erase(0, 1);
+  return mantissa + "e" + (negative ? "-" : "") + exponent;
+}
+
+std::string tick_text(double v, bool log) {
+  if (!log) return short_number(v);
+  const int e = static_cast<int>(std::lround(std::log10(v)));
+  if (std::abs(v - std::pow(10.0, e)) > 1e-9 * v) return short_number(v);
+  return "10<sup>" + std::to_string(e) + "</sup>";
+}
+
+// The colour bar under a false-colour picture: the ramp from black (the scale's lo,
+// left) to red (hi, right), the values along it and what they measure.
+void colour_bar_html(std::ostream& os, const ColourScale& scale) {
+  const double lo = scale.log10 ? std::log10(scale.lo) : scale.lo, hi = scale.log10 ? std::log10(scale.hi) : scale.hi;
+  std::string gradient;
+  for (const Pixel& p : false_colour_stops)
+    gradient += (gradient.empty() ? "" : ", ") + std::string("rgb(") + std::to_string(std::lround(255 * p.x)) + " " +
+                std::to_string(std::lround(255 * p.y)) + " " + std::to_string(std::lround(255 * p.z)) + ")";
+  os << "<div class=\"colour-bar\" title=\""
+     << html_escape(false_colour_map_name) << "\">\n<div class=\"ramp\" style=\"background: linear-gradient(to right, "
+     << gradient << ")\"></div>\n<div class=\"ticks\">";
+  // The ends always, and the round values between that do not crowd them.
+  std::vector<std::pair<double, double>> ticks = {{0.0, scale.lo}, {1.0, scale.hi}};
+  if (std::isfinite(lo) && std::isfinite(hi) && hi != lo)
+    for (double t : bar_ticks(scale.lo, scale.hi, scale.log10)) {
+      const double f = ((scale.log10 ? std::log10(t) : t) - lo) / (hi - lo);
+      if (f > 0.15 && f < 0.85) ticks.push_back({f, t});
+    }
+  std::sort(ticks.begin(), ticks.end());
+  for (const auto& [f, v] : ticks) {
+    const char* align = f < 0.01 ? "start" : f > 0.99 ? "end" : "middle";
+    os << "<span class=\"" << align << "\" style=\"left: " << number(100 * f, 4) << "%\">" << tick_text(v, scale.log10)
+       << "</span>";
+  }
+  os << "</div>\n<div class=\"quantity\">" << html_escape(scale.quantity) << (scale.log10 ? " (log scale)" : "")
+     << "</div>\n</div>\n";
+}
+
+// A picture or diagram in a gallery: shown at shown_width, the caption beneath, how
+// it was made folded away.
+void figure_html(std::ostream& os, const Output& o, int width, int height, const std::string& details) {
+  const int shown = shown_width(width);
+  // In a gallery, figures share a row: each may shrink to 200 px and grows to the
+  // size it is shown at. A strip of pictures set side by side (2.5 times as wide as
+  // high, or more) has a row of its own: its parts are what is compared.
+  std::string classes = o.colour_scale ? "false-colour" : "";
+  if (height > 0 && 2 * width >= 5 * height) classes += classes.empty() ? "strip" : " strip";
+  os << "<figure" << (classes.empty() ? "" : " class=\"" + classes + "\"") << " style=\"max-width: "
+     << std::max(shown, 240) << "px\"><img src=\"" << html_escape(url_path(o.file.generic_string())) << "\" alt=\"" << html_escape(o.caption)
+     << "\"";
+  if (width > 0) os << " width=\"" << shown << "\" height=\"" << (shown / width) * height << "\"";
+  os << ">\n";
+  if (o.colour_scale) colour_bar_html(os, *o.colour_scale);
+  os << "<figcaption>" << html_escape(o.caption) << " <details><summary>" << link(o.file) << "</summary>" << details
+     << "</details></figcaption></figure>\n";
+}
+
+bool in_gallery(const Output& o) { return o.kind == OutputKind::Picture || o.kind == OutputKind::Diagram; }
 
 void output_html(std::ostream& os, const Output& o) {
   switch (o.kind) {
     case OutputKind::Text: break;  // gathered into <pre> blocks by the caller
     case OutputKind::Table: table_html(os, o); break;
-    case OutputKind::Picture: figure_html(os, o, link(o.file) + "; " + picture_details(o), o.view.width, o.view.height); break;
+    case OutputKind::Picture: figure_html(os, o, o.view.width, o.view.height, picture_details(o)); break;
     case OutputKind::Diagram:
-    case OutputKind::Chart: figure_html(os, o, link(o.file)); break;
+      figure_html(os, o, o.width, o.height,
+                  o.colour_scale ? "false colour: " + html_escape(false_colour_map_name) : std::string("a diagram"));
+      break;
+    case OutputKind::Chart:
+      os << "<figure class=\"chart\"><img src=\"" << html_escape(url_path(o.file.generic_string())) << "\" alt=\""
+         << html_escape(o.caption) << "\"><figcaption>" << html_escape(o.caption) << " <span class=\"file\">"
+         << link(o.file) << "</span></figcaption></figure>\n";
+      break;
     case OutputKind::Viewer:
       os << "<p class=\"viewer\"><a href=\"" << html_escape(url_path(o.file.generic_string()))
          << "\">Open the interactive viewer</a> " << html_escape(o.caption) << "</p>\n";
@@ -127,28 +240,52 @@ void output_html(std::ostream& os, const Output& o) {
   }
 }
 
+// The top of the page: what the lesson shows, where to read and practise it, and the
+// viewer, each one click away.
+void header_html(std::ostream& os, const RunSummary& run, const std::vector<Output>& outputs) {
+  if (run.in_index) os << "<nav><a href=\"../index.html\">all lessons</a></nav>\n";
+  const LessonGuide* guide = run.guide ? &*run.guide : nullptr;
+  os << "<h1>" << html_escape(guide ? guide->title : run.lesson) << "</h1>\n<section class=\"shows\">\n"
+     << "<h2>What this shows</h2>\n<p>" << (guide ? markdown_inline_html(guide->shows) : html_escape(run.summary))
+     << "</p>\n</section>\n<p class=\"links\">";
+  if (guide) {
+    os << "<a class=\"doc\" href=\"" << html_escape(source_link(run.folder, guide->doc)) << "\">Read the chapter: "
+       << html_escape(guide->doc) << "</a>";
+    if (!guide->lab.empty())
+      os << " <a class=\"lab\" href=\"" << html_escape(source_link(run.folder, guide->lab)) << "\">The lab: "
+         << html_escape(guide->lab) << "</a>";
+  }
+  for (const Output& o : outputs)
+    if (o.kind == OutputKind::Viewer)
+      os << " <a class=\"viewer-link\" href=\"" << html_escape(url_path(o.file.generic_string()))
+         << "\">Open the interactive viewer</a>";
+  const bool complete = run.status == "complete";
+  os << "</p>\n<p class=\"status " << (complete ? "complete" : "failed") << "\">" << html_escape(run.status) << "</p>\n"
+     << "<p class=\"command\"><code>" << html_escape(shell_command(run.command)) << "</code></p>\n";
+}
+
 }  // namespace
 
 std::string report_page(const RunSummary& run, const std::vector<Output>& outputs) {
   std::ostringstream os;
-  const bool complete = run.status == "complete";
   os << "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << html_escape(run.lesson)
      << "</title>\n<style>\n" << page_asset("report.css") << "</style>\n</head>\n<body>\n";
-  if (run.in_index) os << "<nav><a href=\"../index.html\">all lessons</a></nav>\n";
-  os << "<h1>" << html_escape(run.lesson) << "</h1>\n<p class=\"summary\">" << html_escape(run.summary) << "</p>\n"
-     << "<p class=\"command\"><code>" << html_escape(shell_command(run.command)) << "</code></p>\n"
-     << "<p class=\"status " << (complete ? "complete" : "failed") << "\">" << html_escape(run.status) << "</p>\n";
-  // Consecutive text lines are one block, as they were on the terminal.
-  bool in_text = false;
+  header_html(os, run, outputs);
+  // Consecutive text lines are one block, as they were on the terminal; consecutive
+  // pictures one gallery, side by side, to be compared.
+  enum class Run { None, Text, Gallery } open = Run::None;
   for (const Output& o : outputs) {
-    const bool text = o.kind == OutputKind::Text;
-    if (text && !in_text) os << "<pre>";
-    if (!text && in_text) os << "</pre>\n";
-    in_text = text;
-    if (text) os << html_escape(o.caption) << '\n';
+    const Run kind = o.kind == OutputKind::Text ? Run::Text : in_gallery(o) ? Run::Gallery : Run::None;
+    if (kind != open && open == Run::Text) os << "</pre>\n";
+    if (kind != open && open == Run::Gallery) os << "</div>\n";
+    if (kind != open && kind == Run::Text) os << "<pre>";
+    if (kind != open && kind == Run::Gallery) os << "<div class=\"gallery\">\n";
+    open = kind;
+    if (kind == Run::Text) os << html_escape(o.caption) << '\n';
     else output_html(os, o);
   }
-  if (in_text) os << "</pre>\n";
+  if (open == Run::Text) os << "</pre>\n";
+  if (open == Run::Gallery) os << "</div>\n";
   os << "</body>\n</html>\n";
   return os.str();
 }
