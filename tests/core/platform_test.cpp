@@ -16,7 +16,9 @@
 #include "gi/core/platform/folder_lock.hpp"
 #include "gi/core/platform/new_file.hpp"
 #include "gi/core/platform/process.hpp"
+#include "gi/core/platform/program.hpp"
 #include "support/files.hpp"
+#include "support/process.hpp"
 
 namespace {
 
@@ -99,6 +101,28 @@ TEST(Process, ThisProcessExistsAndNumbersNoProcessCanHaveDoNot) {
   EXPECT_FALSE(platform::process_exists(-1));
   EXPECT_FALSE(platform::process_exists(999999999)) << "beyond Linux's largest (2^22) and never a Windows one";
   EXPECT_FALSE(platform::process_exists(0x7fffffffffffLL)) << "larger than any process number";
+}
+
+// A start stamp tells a process from a later one given its number: the same for as
+// long as the process runs, and none once it has ended.
+TEST(Process, AStartStampStaysWhileItRunsAndGoesWithIt) {
+  const long long self = platform::current_process_id();
+#if defined(__linux__) || defined(_WIN32)
+  EXPECT_FALSE(platform::process_start_stamp(self).empty()) << "Linux has /proc, Windows GetProcessTimes";
+#endif
+  EXPECT_EQ(platform::process_start_stamp(self), platform::process_start_stamp(self));
+  long long ended = -1;
+  {
+    platform::StartedProgram child(gi_test::exits_at_once());
+    ended = child.id();
+    EXPECT_GT(ended, 0);
+    EXPECT_NE(ended, self);
+    child.kill();  // waits for it
+  }
+  EXPECT_FALSE(platform::process_exists(ended));
+  EXPECT_EQ(platform::process_start_stamp(ended), "");
+  EXPECT_EQ(platform::process_start_stamp(-1), "");
+  EXPECT_EQ(platform::process_start_stamp(999999999), "");
 }
 
 // The lock is held by one at a time: a second locker waits until the first lets go.

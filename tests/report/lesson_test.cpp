@@ -180,7 +180,7 @@ TEST(Lesson, ARunThatIsKilledLeavesARunningRecordAndItsTemporariesAreCleared) {
   const LessonRun r = run({"--out", out.string()}, [&](gi::Lesson&) {
     const std::string record = gi_test::file_text(out / "outputs.json");
     EXPECT_NE(record.find("\"status\": \"running\""), std::string::npos) << record;
-    EXPECT_NE(record.find("\"process\": {\"id\": " + std::to_string(::getpid()) + ", \"started\": \""),
+    EXPECT_NE(record.find("\"process\": {\"id\": " + std::to_string(gi::platform::current_process_id()) + ", \"started\": \""),
               std::string::npos) << record;
     EXPECT_FALSE(fs::exists(out / "index.html")) << "a run killed now must not leave the old page";
   });

@@ -51,4 +51,12 @@ std::vector<std::string> emulated(const std::vector<std::string>& command) {
   return full;
 }
 
+std::vector<std::string> exits_at_once() {
+#if defined(_WIN32)
+  return {"cmd.exe", "/c", "exit 0"};
+#else
+  return {"/bin/sh", "-c", "exit 0"};
+#endif
+}
+
 }  // namespace gi_test

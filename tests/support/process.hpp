@@ -15,4 +15,8 @@ std::vector<std::string> shell_words(const std::string& text);
 // `command`, after the emulator the build runs its programs with (none natively).
 std::vector<std::string> emulated(const std::vector<std::string>& command);
 
+// A program of the system's own that exits at once with status 0 (the shell's `exit 0`;
+// cmd.exe's on Windows): a process that has ended, for tests of process numbers.
+std::vector<std::string> exits_at_once();
+
 }  // namespace gi_test

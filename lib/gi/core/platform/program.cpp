@@ -140,7 +140,8 @@ ProgramRun run_program(const std::vector<std::string>& command, double time_limi
 }
 
 StartedProgram::StartedProgram(const std::vector<std::string>& command)
-    : process_(reinterpret_cast<long long>(start(command, nullptr))) {}
+    : process_(reinterpret_cast<long long>(start(command, nullptr))),
+      id_(static_cast<long long>(::GetProcessId(reinterpret_cast<HANDLE>(process_)))) {}
 
 bool StartedProgram::kill() {
   if (done_) return false;
@@ -234,7 +235,7 @@ ProgramRun run_program(const std::vector<std::string>& command, double time_limi
   return run;
 }
 
-StartedProgram::StartedProgram(const std::vector<std::string>& command) : process_(start(command, -1)) {}
+StartedProgram::StartedProgram(const std::vector<std::string>& command) : process_(start(command, -1)), id_(process_) {}
 
 bool StartedProgram::kill() {
   if (done_) return false;

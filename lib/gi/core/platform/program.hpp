@@ -33,8 +33,12 @@ class StartedProgram {
   // already finished.
   bool kill();
 
+  // Its process number, as current_process_id() (process.hpp) gives it to the program.
+  long long id() const { return id_; }
+
  private:
   long long process_ = -1;  // the pid (POSIX) or the process's handle (Windows)
+  long long id_ = -1;
   bool done_ = false;
 };
 
