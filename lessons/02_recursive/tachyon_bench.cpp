@@ -12,7 +12,8 @@
 // fastest and slowest of --runs renders each, the ratio of the medians, N threads
 // against one, both programs' versions and the machine's load at the start and the
 // end. Needs `tachyon` on PATH; without it, one line and status 1. Tachyon writes
-// its image into a temporary folder, removed at the end.
+// its image into a temporary folder, removed at the end. POSIX only (Linux, macOS):
+// not built for Windows.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -25,6 +26,8 @@
 
 #include "external_program.hpp"
 #include "gi/core/parallel.hpp"
+#include "gi/core/platform/program.hpp"
+#include "gi/core/platform/temporary_folder.hpp"
 #include "gi/core/timer.hpp"
 #include "gi/raytrace/render.hpp"
 #include "gi/report/lesson.hpp"
@@ -59,10 +62,9 @@ struct Tachyon {
 
 // One Tachyon render on `threads` threads: the Ray Tracing Time it prints, in ms.
 double tachyon_ms(Tachyon& tachyon, int threads) {
-  const gi::ProgramRun run = gi::run_program(
-      tachyon.program,
-      {tachyon.scene, "-res", std::to_string(tachyon.width), std::to_string(tachyon.height), "-numthreads",
-       std::to_string(threads), "-format", "PPM", "-o", tachyon.image.string()},
+  const gi::platform::ProgramRun run = gi::platform::run_program(
+      {tachyon.program.string(), tachyon.scene, "-res", std::to_string(tachyon.width), std::to_string(tachyon.height),
+       "-numthreads", std::to_string(threads), "-format", "PPM", "-o", tachyon.image.string()},
       tachyon.time_limit);
   if (run.status != 0)
     throw std::runtime_error(tachyon.program.string() +
@@ -130,7 +132,7 @@ int main(int argc, char** argv) {
   });
   return lesson.run(argc, argv, [&] {
     const std::string load_at_start = load_average();
-    const gi::TemporaryFolder folder("gi_tachyon_bench_");
+    const gi::platform::TemporaryFolder folder("gi_tachyon_bench_");
     tachyon.image = folder.path() / "s10.ppm";
     const gi::World world = gi::make_world(gi::make_scene("s10"), gi::acceleration_from_name(accel));
     gi::RenderSettings settings;

@@ -2,11 +2,8 @@
 // killed midway, a damaged cache; solvers that stop early; sizes refused before work;
 // every picture written also as PFM with its camera.
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <unistd.h>
 
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -83,21 +80,11 @@ TEST(LessonFaults, AKilledRunLeavesNoHalfFileAndTheNextRunCleansUp) {
   // in release, far longer under the sanitizers); every file present is whole each time.
   int killed = 0;
   for (int ms : {100, 200, 300, 400, 500, 600, 700, 800, 1000, 1200}) {
-    const pid_t child = fork();
-    ASSERT_GE(child, 0);
-    if (child == 0) {
-      freopen("/dev/null", "w", stdout);
-      freopen("/dev/null", "w", stderr);
-      const std::string lesson = std::string(GI_BIN_DIR) + "/11_progressive";
-      execl(lesson.c_str(), lesson.c_str(), "--patches", "60", "--resolution", "30", "--width", "400", "--height",
-            "400", "--speed-elements", "100", "--threads", "1", "--out", folder.c_str(), static_cast<char*>(nullptr));
-      _exit(127);
-    }
+    gi::platform::StartedProgram lesson(gi_test::lesson_command(
+        "11_progressive", {"--patches", "60", "--resolution", "30", "--width", "400", "--height", "400",
+                           "--speed-elements", "100", "--threads", "1", "--out", folder}));
     std::this_thread::sleep_for(std::chrono::milliseconds(ms));
-    kill(child, SIGKILL);
-    int status = 0;
-    waitpid(child, &status, 0);
-    if (!WIFSIGNALED(status)) continue;  // it finished first
+    if (!lesson.kill()) continue;  // it finished first
     ++killed;
     // What a killed run leaves is its record saying "running" (the index shows it
     // killed once the process is gone), or, killed after its last check, "complete";

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 
+#include "gi/core/decimal.hpp"
 #include "gi/report/options.hpp"
 
 namespace gi {
@@ -22,7 +22,7 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 double number(const std::string& text, const std::string& what) {
   double v = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+  const auto [end, error] = read_decimal(text.data(), text.data() + text.size(), v);
   if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
     throw OptionError(what + ": expected a number, got '" + text + "'");
   return v;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <unordered_map>
 
+#include "gi/core/decimal.hpp"
 #include "gi/scene/json.hpp"
 #include "gi/scene/utf8.hpp"
 
@@ -90,7 +91,7 @@ class ObjReader {
 
   double number(const Word& w) const {
     double v = 0;
-    const auto [end, error] = std::from_chars(w.text.data(), w.text.data() + w.text.size(), v);
+    const auto [end, error] = read_decimal(w.text.data(), w.text.data() + w.text.size(), v);
     if (error != std::errc() || end != w.text.data() + w.text.size() || !std::isfinite(v))
       fail(w.column, "v", "expected a number, got '" + std::string(w.text.substr(0, 40)) + "'");
     if (std::abs(v) > 1e6) fail(w.column, "v", "a coordinate must lie in [-1e6, 1e6], got " + std::string(w.text));
