@@ -304,8 +304,8 @@ TEST(Lessons, SameBytesForAnyThreadCount) {
 }
 
 // Faster code must not change the picture: these are the FNV-1a hashes of the bytes
-// that main's tracer wrote before the speed work of issue 19 (part 1: brute force
-// four spheres at a time; lesson 02's default became brute force). Every way of
+// that the plain tracer wrote before its fast paths were added (brute force four
+// spheres at a time became lesson 02's default). Every way of
 // finding hits, on one thread and on two, must still give them. A change that means
 // to alter the picture (a new shading term) updates the hashes and says why.
 TEST(Lessons, WhittedS10KeepsItsBytes) {

@@ -1,4 +1,4 @@
-// The lessons under bad conditions (issue 12): a full disk, a read-only folder, a run
+// The lessons under bad conditions: a full disk, a read-only folder, a run
 // killed midway, a damaged cache; solvers that stop early; sizes refused before work;
 // every picture written also as PFM with its camera.
 #include <gtest/gtest.h>

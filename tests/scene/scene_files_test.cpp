@@ -1,4 +1,4 @@
-// Every built-in scene is also a file under lessons/scenes/ (issue 18). The file must
+// Every built-in scene is also a file under lessons/scenes/. The file must
 // hold the same scene, value for value, and render the same bytes: the C++ is the
 // source, so when it changes (new reflectances, say) these tests name the value the
 // file must follow.
