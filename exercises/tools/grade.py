@@ -339,6 +339,23 @@ def stop(signum, frame):
     raise KeyboardInterrupt
 
 
+_closing = []
+
+
+def closing_line(text):
+    """The run's one closing line on standard error: a signal that comes after it adds none."""
+    if not _closing:
+        _closing.append(text)
+        print(text, file=sys.stderr)
+
+
+def ignore_signals():
+    """From here on a signal cannot interrupt: the cleaning up, or the exit itself."""
+    for name in ("SIGINT", "SIGTERM", "SIGHUP"):
+        if hasattr(signal, name):
+            signal.signal(getattr(signal, name), signal.SIG_IGN)
+
+
 def main(argv):
     temp = None
     for name in ("SIGTERM", "SIGHUP"):  # exercises/grade turns Ctrl-C into SIGTERM
@@ -365,16 +382,14 @@ def main(argv):
             write_json(temp, Path(args.json), gradescope(results, names, args.hidden_visibility, ROOT))
             temp = None
     except UsageError as e:
-        print(f"grade: error: {e} (try --help)", file=sys.stderr)
+        closing_line(f"grade: error: {e} (try --help)")
         return 2
     except (build.BuildError, regions.RegionError) as e:
-        print(f"grade: error: {e}", file=sys.stderr)
+        closing_line(f"grade: error: {e}")
         return 1
     except KeyboardInterrupt:
-        for name in ("SIGINT", "SIGTERM", "SIGHUP"):  # a second one must not interrupt the cleaning up
-            if hasattr(signal, name):
-                signal.signal(getattr(signal, name), signal.SIG_IGN)
-        print("grade: interrupted", file=sys.stderr)
+        ignore_signals()  # a second one must not interrupt the cleaning up
+        closing_line("grade: interrupted")
         return 130
     finally:
         if temp:
@@ -389,4 +404,13 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    # A signal that comes as main returns (after an error line, say) ends the run as
+    # one does during it: one line, status 130, never a traceback from the exit.
+    try:
+        status = main(sys.argv[1:])
+        ignore_signals()
+    except KeyboardInterrupt:
+        ignore_signals()
+        closing_line("grade: interrupted")
+        status = 130
+    sys.exit(status)
