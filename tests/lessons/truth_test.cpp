@@ -78,7 +78,9 @@ TEST(StoredTruths, AStaleOneIsRefusedBeforeAnyWork) {
 void kept_reference_is_rendered_again(const std::string& lesson, const std::string& args, const std::string& read) {
   const std::string folder = out_dir("kept_" + lesson);
   fs::remove_all(folder);
-  ASSERT_EQ(run(lesson, args + " --out " + folder).status, 0);
+  const LessonRun first = run(lesson, args + " --out " + folder);
+  if (first.status == 3) GTEST_SKIP() << lesson << " stops at an exercise not written yet (a student kit)";
+  ASSERT_EQ(first.status, 0) << first.output;
   fs::path stem;
   for (const auto& entry : fs::directory_iterator(folder))
     if (entry.path().filename().string().starts_with("reference_") && entry.path().extension() == ".txt")

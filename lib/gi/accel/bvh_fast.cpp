@@ -84,7 +84,7 @@ inline float float_up(double x) {
   return f < x ? std::bit_cast<float>(f < 0 ? bits - 1 : bits + 1) : f;
 }
 
-FloatRay float_ray(const Ray& ray, float reach) {
+[[maybe_unused]] FloatRay float_ray(const Ray& ray, float reach) {  // unread in a kit, whose walks are hidden
   FloatRay r;
   const double largest = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z)});
   const auto pad = static_cast<float>(0x1p-20 * (reach + largest + 1));
@@ -142,7 +142,7 @@ struct Pending {
   float t_enter;
 };
 
-Pending child(const FastBvhNode& node, int c, float t_enter) { return {node.index[c], node.count[c], t_enter}; }
+[[maybe_unused]] Pending child(const FastBvhNode& node, int c, float t_enter) { return {node.index[c], node.count[c], t_enter}; }
 
 // The ray against refs[i]: a quad from the copy beside the refs, as the same quad in
 // scene.quads gives the same bits; another kind from the scene.
