@@ -103,7 +103,7 @@ DETACH = r'''
       "setsid sh -c 'sleep 4; echo {MARK} > /dev/null; printf \"{\\\"score\\\": 999}\" > {RESULTS}' "
       ">/dev/null 2>&1 &");
   (void)started;
-  return std::nullopt;
+  throw std::runtime_error("attacked");  // so that the function earns nothing
 '''
 SLEEP_PAST_THE_LIMIT = r'''
   (void)ray, (void)plane;
@@ -126,7 +126,7 @@ FORK_BOMB = r'''
   (void)ray, (void)sphere;
   static const int bombed = std::system("sh -c 'f() { f | f & }; f' {MARK} >/dev/null 2>&1");
   (void)bombed;
-  return std::nullopt;
+  throw std::runtime_error("attacked");  // so that the function earns nothing
 '''
 INCLUDE_HIDDEN = '#include "{ROOT}/exercises/lab01/hidden/random_rays_test.cpp"\n  return std::nullopt;\n'
 ESCAPE_THE_FUNCTION = r'''
