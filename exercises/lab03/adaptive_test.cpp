@@ -3,8 +3,8 @@
 // the threshold away from the mean of the four, in any colour channel.
 #include <gtest/gtest.h>
 
-#include "gi/raytrace/adaptive.hpp"
-#include "gi/raytrace/pixel_samplers.hpp"
+#include "gi/render/adaptive.hpp"
+#include "gi/render/pixel_samplers.hpp"
 #include "support/print.hpp"
 
 using gi::Color;

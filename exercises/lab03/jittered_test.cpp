@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "gi/core/rng.hpp"
-#include "gi/raytrace/pixel_samplers.hpp"
+#include "gi/render/pixel_samplers.hpp"
 #include "support/print.hpp"
 #include "support/statistics.hpp"
 
@@ -76,6 +76,33 @@ TEST(Ex3_1_Jittered, XAndYOffsetsAreIndependent) {
     }
   EXPECT_EQ(diagonal, 0) << diagonal << " samples have the same offset in x and y: draw a separate random "
                                         "number for each coordinate, or every sample lies on its cell's diagonal";
+}
+
+TEST(Ex3_1_Jittered, EveryCellDrawsItsOwnOffsets) {
+  // Two cells side by side (or one above the other) with the same offset, in x or in
+  // y, happen with probability 0 for independent uniform offsets: over 50 patterns of
+  // 4 x 4, not once. Offsets drawn once per row (or column) of cells repeat n times.
+  gi::Rng rng(14);
+  const int n = 4;
+  int same_in_a_row = 0, same_in_a_column = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    const std::vector<gi::vec2> p = gi::jittered_positions(n, rng);
+    if (p.size() != static_cast<std::size_t>(n * n)) continue;  // ReturnsNSquaredSamples says why
+    std::vector<gi::vec2> cell(n * n, gi::vec2(-1));
+    for (const gi::vec2& q : p)
+      if (q.x >= 0 && q.x < 1 && q.y >= 0 && q.y < 1) cell[int(q.y * n) * n + int(q.x * n)] = offset_in_cell(q, n);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i + 1 < n; ++i) {
+        const gi::vec2 a = cell[j * n + i], b = cell[j * n + i + 1], c = cell[i * n + j], d = cell[(i + 1) * n + j];
+        if (a.x >= 0 && b.x >= 0 && (a.x == b.x || a.y == b.y)) ++same_in_a_row;
+        if (c.x >= 0 && d.x >= 0 && (c.x == d.x || c.y == d.y)) ++same_in_a_column;
+      }
+  }
+  EXPECT_EQ(same_in_a_row, 0) << same_in_a_row << " pairs of neighbouring cells in a row have the same offset: "
+                              << "draw new random numbers for every cell, not once per row of cells (every cell of "
+                                 "a row then jitters alike, and the rows alias as lines)";
+  EXPECT_EQ(same_in_a_column, 0) << same_in_a_column << " pairs of cells one above the other have the same offset: "
+                                 << "draw new random numbers for every cell, not once per column of cells";
 }
 
 TEST(Ex3_1_Jittered, OffsetsAreUniformInTheCell) {

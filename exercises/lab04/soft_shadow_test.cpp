@@ -60,8 +60,12 @@ TEST(Ex4_2_SoftShadow, UnoccludedLightIsTheMeanOverItsSamples) {
   Color expected(0.0);
   for (const vec3& y : points) expected += lit(y) / 4.0;
   const Color got = gi::soft_shadow_estimate(light, samples, all, lit);
-  EXPECT_NEAR(got.x, expected.x, 1e-12) << "average what a point light at each sample point gives";
-  EXPECT_NEAR(got.y, expected.y, 1e-12) << "average what a point light at each sample point gives";
+  const char* why = gi::length(got - lit(gi::point_on_light(light, {0.5, 0.5}))) < 1e-9
+                        ? "this is the light of the light's centre alone: light each sample from its own point, "
+                          "point_on_light(light, uv[k]), and average"
+                        : "average what a point light at each sample point gives";
+  EXPECT_NEAR(got.x, expected.x, 1e-12) << why;
+  EXPECT_NEAR(got.y, expected.y, 1e-12) << why;
   EXPECT_NEAR(got.z, 1.0, 1e-12) << "N samples of 1 average to 1: divide the sum by N";
 }
 
@@ -70,15 +74,6 @@ TEST(Ex4_2_SoftShadow, HiddenLightGivesNothing) {
   const auto lit = [](const vec3&) { return Color(1.0); };
   EXPECT_EQ(gi::soft_shadow_estimate(light, samples, none, lit), Color(0.0))
       << "no shadow ray reaches the light: the point is in the umbra";
-}
-
-TEST(Ex4_2_SoftShadow, DivideByAllSamplesNotTheVisibleOnes) {
-  Samples seen(samples);
-  const auto half = [&](const vec3& y) { return seen.which(y) % 2 == 0; };  // samples 0 and 2
-  const auto lit = [](const vec3&) { return Color(1.0); };
-  EXPECT_NEAR(gi::soft_shadow_estimate(light, samples, half, lit).x, 0.5, 1e-12)
-      << "two of four shadow rays reach the light: half lit. Dividing by the visible samples "
-         "instead of all N makes every penumbra fully lit";
 }
 
 TEST(Ex4_2_SoftShadow, ShadowRaysGoToTheSamplePoints) {
@@ -92,8 +87,10 @@ TEST(Ex4_2_SoftShadow, ShadowRaysGoToTheSamplePoints) {
   ASSERT_EQ(asked.size(), samples.size()) << "one visibility test (shadow ray) per sample";
   for (std::size_t k = 0; k < samples.size(); ++k)
     EXPECT_LT(gi::length(asked[k] - points[k]), 1e-9)
-        << "shadow ray " << k << " must aim at point_on_light(light, uv[" << k << "]); aiming every ray at the "
-        << "centre gives the hard shadow of a point light";
+        << (gi::length(asked[k] - gi::point_on_light(light, {0.5, 0.5})) < 1e-9
+                ? "every shadow ray aims at the light's centre: that is the hard shadow of a point light; aim "
+                  "shadow ray k at point_on_light(light, uv[k])"
+                : "shadow ray k must aim at point_on_light(light, uv[k]), the point of its own sample");
 }
 
 TEST(Ex4_2_SoftShadow, EachSampleIsLitFromItsOwnPoint) {
@@ -107,7 +104,19 @@ TEST(Ex4_2_SoftShadow, EachSampleIsLitFromItsOwnPoint) {
   ASSERT_EQ(shaded.size(), samples.size()) << "ask for the unshadowed light once per visible sample";
   for (std::size_t k = 0; k < samples.size(); ++k)
     EXPECT_LT(gi::length(shaded[k] - points[k]), 1e-9)
-        << "the light from sample " << k << " comes from its own point on the light, not the centre";
+        << (gi::length(shaded[k] - gi::point_on_light(light, {0.5, 0.5})) < 1e-9
+                ? "every sample is lit from the light's centre: the light from sample k comes from its own point "
+                  "on the light, point_on_light(light, uv[k])"
+                : "the light from sample k comes from its own point on the light, point_on_light(light, uv[k])");
+}
+
+TEST(Ex4_2_SoftShadow, DivideByAllSamplesNotTheVisibleOnes) {
+  Samples seen(samples);
+  const auto half = [&](const vec3& y) { return seen.which(y) % 2 == 0; };  // samples 0 and 2
+  const auto lit = [](const vec3&) { return Color(1.0); };
+  EXPECT_NEAR(gi::soft_shadow_estimate(light, samples, half, lit).x, 0.5, 1e-12)
+      << "two of four shadow rays reach the light: half lit. Dividing by the visible samples "
+         "instead of all N makes every penumbra fully lit";
 }
 
 TEST(Ex4_2_SoftShadow, OnlyVisibleSamplesAddLight) {

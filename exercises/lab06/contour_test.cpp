@@ -26,6 +26,18 @@ TEST(Ex6_2_Contour, CornerRectangleMatchesHowell) {
          "wrong way round, a value 2 pi too large a missing 1/(2 pi)";
 }
 
+TEST(Ex6_2_Contour, ThePointNeedNotBeAtTheOrigin) {
+  // Howell's corner case moved, point and rectangle together, to x = (2.5, -1.5, 0.75):
+  // the same form factor. With x at the origin a forgotten "- x" on any vertex hides.
+  const vec3 x(2.5, -1.5, 0.75);
+  std::array<vec3, 4> r = rectangle(0, 1.3, 0, 0.6, 0.9);
+  for (vec3& v : r) v += x;
+  EXPECT_NEAR(gi::contour_integral(x, {0, 0, 1}, r.data(), 4), gi::ff_point_to_parallel_rectangle_corner(1.3, 0.6, 0.9),
+              1e-12)
+      << "the vertex vectors are R_k = v_k - x for every vertex, the next one of each edge included: a point at "
+         "the origin hides a forgotten '- x'";
+}
+
 TEST(Ex6_2_Contour, CentredSquareIsFourCorners) {
   const double corner = gi::ff_point_to_parallel_rectangle_corner(1, 1, 2);
   EXPECT_NEAR(contour({0, 0, 1}, rectangle(-1, 1, -1, 1, 2)), 4 * corner, 1e-12)

@@ -2,6 +2,10 @@
 // update. One point per test.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <string>
+
 #include "gi/radiosity/system/solvers.hpp"
 #include "support/print.hpp"
 
@@ -16,35 +20,83 @@ gi::RadiositySystem three() {
   s.F = {3, {0.0, 0.5, 0.2, 0.25, 0.0, 0.1, 0.4, 0.4, 0.0}};
   return s;
 }
+
+// Four elements, for the first pick test: every wrong rule picks another one.
+gi::RadiositySystem four() {
+  gi::RadiositySystem s;
+  s.area = {1.0, 2.0, 0.5, 1.0};
+  s.rho = {Color(0.5), Color(0.5), Color(0.5), Color(0.5)};
+  s.emission = {Color(1.0), Color(0.0), Color(0.0), Color(0.0)};
+  s.F = {4, {0.0, 0.2, 0.1, 0.1, 0.1, 0.0, 0.1, 0.1, 0.1, 0.3, 0.0, 0.1, 0.2, 0.2, 0.1, 0.0}};
+  return s;
+}
+
+// The rule a wrong pick matches, among the slips students make, or "".
+std::string rule_of(const gi::RadiositySystem& s, const std::vector<Color>& r, int picked, int want) {
+  if (picked == want || picked < 0 || picked >= s.size()) return "";
+  const auto argmax = [&](auto size) {
+    int best = 0;
+    for (int j = 1; j < s.size(); ++j)
+      if (size(j) > size(best)) best = j;
+    return best;
+  };
+  const auto largest = [&](int j) { return std::max({std::abs(r[j].x), std::abs(r[j].y), std::abs(r[j].z)}); };
+  const struct {
+    int pick;
+    const char* rule;
+  } rules[] = {
+      {argmax([&](int j) { return largest(j) * s.area[j]; }),
+       "the largest |r_i| A_i: weighting by area is progressive refinement's rule (unshot power), not Southwell's"},
+      {argmax([&](int j) { return std::abs(r[j].x + r[j].y + r[j].z) * s.area[j]; }),
+       "the largest area-weighted sum of channels: that is unshot power, progressive refinement's rule"},
+      {argmax([&](int j) { return (r[j].x + r[j].y + r[j].z) * s.area[j]; }),
+       "the most unshot power, sum of the channels times the area: progressive refinement's rule, not "
+       "Southwell's"},
+      {argmax([&](int j) { return std::max({r[j].x, r[j].y, r[j].z}); }),
+       "the largest signed residual: a negative residual counts by its size |r_i|"},
+      {argmax([&](int j) { return std::abs(r[j].x) + std::abs(r[j].y) + std::abs(r[j].z); }),
+       "the largest sum of the channels: the size of a residual is its largest channel"},
+      {argmax([&](int j) { return std::abs(r[j].x); }), "the largest red residual: look at every channel"},
+      {argmax([&](int j) { return -largest(j); }), "the smallest residual: Southwell relaxes the largest"},
+      {argmax([&](int j) { return j == 0 ? -1.0 : largest(j); }),
+       "the largest residual after element 0, which is never compared: start from i = 0 and compare every element"},
+  };
+  for (const auto& [pick, rule] : rules)
+    if (pick == picked && pick != want)
+      return "element " + std::to_string(picked) + " has " + rule + "; relax element " + std::to_string(want) +
+             ", the largest max_c |r_i,c|. ";
+  return "";
+}
+
+// southwell_step's pick, and what is wrong with it (the matching slip first).
+void expect_pick(const gi::RadiositySystem& s, std::vector<Color> r, int want, const char* message) {
+  std::vector<Color> B(s.size(), Color(0.0)), r_before = r;
+  const int picked = gi::southwell_step(s, B, r);
+  EXPECT_EQ(picked, want) << rule_of(s, r_before, picked, want) << message;
+}
 }  // namespace
-
-TEST(Ex10_1_Southwell, PicksTheLargestResidual) {
-  const gi::RadiositySystem s = three();
-  std::vector<Color> B(3, Color(0.0)), r = {Color(0.1), Color(-0.5), Color(0.3)};
-  EXPECT_EQ(gi::southwell_step(s, B, r), 1) << "the largest |r_i|: a negative residual counts by its size";
-}
-
-TEST(Ex10_1_Southwell, LooksAtEveryChannel) {
-  const gi::RadiositySystem s = three();
-  std::vector<Color> B(3, Color(0.0)), r = {Color(0.2), Color(0.1, 0.1, 0.9), Color(0.3)};
-  EXPECT_EQ(gi::southwell_step(s, B, r), 1) << "element 1's blue residual 0.9 is the largest";
-}
 
 TEST(Ex10_1_Southwell, PicksByTheResidualNotTheArea) {
   // Element 1 has the most unshot power |r_1| A_1 = 0.6, element 0 the largest residual 0.5.
-  const gi::RadiositySystem s = three();
-  std::vector<Color> B(3, Color(0.0)), r = {Color(0.5), Color(0.3), Color(0.1)};
-  EXPECT_EQ(gi::southwell_step(s, B, r), 0)
-      << "Southwell relaxes the largest residual |r_i|, element 0 (0.5); weighting by area (|r_i| A_i, "
-         "element 1's 0.6) is progressive refinement's rule, not this one";
+  expect_pick(four(), {Color(0.5), Color(0.3), Color(0.45), Color(0.05)}, 0,
+              "Southwell relaxes the largest residual |r_i|, element 0 (0.5); weighting by area (|r_i| A_i, "
+              "element 1's 0.6) is progressive refinement's rule, not this one");
+}
+
+TEST(Ex10_1_Southwell, PicksTheLargestResidual) {
+  expect_pick(three(), {Color(0.3), Color(-0.5), Color(0.4)}, 1,
+              "the largest |r_i|: a negative residual counts by its size");
+}
+
+TEST(Ex10_1_Southwell, LooksAtEveryChannel) {
+  expect_pick(three(), {Color(0.2), Color(0.1, 0.1, 0.9), Color(0.3)}, 1,
+              "element 1's blue residual 0.9 is the largest");
 }
 
 TEST(Ex10_1_Southwell, PicksByTheLargestChannelNotTheSum) {
-  const gi::RadiositySystem s = three();
-  std::vector<Color> B(3, Color(0.0)), r = {Color(0.5, 0.0, 0.0), Color(0.3, 0.3, 0.3), Color(0.0)};
-  EXPECT_EQ(gi::southwell_step(s, B, r), 0)
-      << "the size of a residual is its largest channel, max_c |r_i,c|: element 0 (0.5), although element 1's "
-         "channels add up to more (0.9)";
+  expect_pick(three(), {Color(0.5, 0.0, 0.0), Color(0.0), Color(0.3, 0.3, 0.3)}, 0,
+              "the size of a residual is its largest channel, max_c |r_i,c|: element 0 (0.5), although element "
+              "2's channels add up to more (0.9)");
 }
 
 TEST(Ex10_1_Southwell, RelaxesTheChosenElement) {

@@ -51,6 +51,18 @@ TEST(Ex13_1_Oracle, SplitsTheEndTheErrorLivesIn) {
       << "a shadow edge inside (V = 0.5) and F_qp > F_pq: the receiver is the bigger end, split it";
 }
 
+TEST(Ex13_1_Oracle, TiesFollowTheRule) {
+  // Values exact in binary, so that each tie is exact.
+  EXPECT_EQ(gi::oracle(link(0.3, 0.1, 0.25f, 0.5f), unit, 0.25, true, true), accept)
+      << "error = 0.5 - 0.25 = 0.25, exactly the threshold: accept (error <= threshold); refining at equality "
+         "cuts every link that just meets the bound";
+  EXPECT_EQ(gi::oracle(link(0.05, 0.3, 0.25f, 0.375f), {0.5, 1.0}, 0.1, true, true), receiver)
+      << "the error over the receiver, 1 * (0.375 - 0.25) = 0.125, equals the one over the source, "
+         "(1 - 0.5) * 0.25 = 0.125: a tie splits the receiver (the source only when its part is larger)";
+  EXPECT_EQ(gi::oracle(link(0.2, 0.2, 0.28f, 0.32f, 0.5), unit, 0.1, true, true), source)
+      << "a shadow edge inside and F_pq = F_qp: a tie cuts the source (F_pq >= F_qp)";
+}
+
 TEST(Ex13_1_Oracle, AnEndAtTheMinimumAreaLeavesTheOther) {
   EXPECT_EQ(gi::oracle(link(0.3, 0.05, 0.1f, 0.5f), unit, 0.1, false, true), source)
       << "the receiver should be split but is at the minimum area: split the source instead";

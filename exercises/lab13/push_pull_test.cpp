@@ -163,9 +163,15 @@ TEST(Ex13_4_PushPull, ALeafGetsItsEmissionAndWhatItAndItsAncestorsGathered) {
   h.nodes[grandchild].gathered = Color(0.125);
   gi::push_pull(h, 0, Color(0.0));
   EXPECT_EQ(h.nodes[grandchild].B, Color(1.0, 2.0, 3.0) + Color(0.5 + 0.25 + 0.125))
-      << "B_leaf = E + everything its ancestors gathered (pushed down) + its own";
+      << "B_leaf = source (its E) + everything its ancestors gathered (pushed down) + its own";
   EXPECT_EQ(h.nodes[h.nodes[0].children[0]].B, Color(1.5, 2.5, 3.5))
       << "a leaf directly under the root gets the root's gathered light too";
+  // A balanced leaf (balance.hpp) takes what reaches it times its gather_scale.
+  h.nodes[h.nodes[0].children[0]].gather_scale = 1.25;
+  gi::push_pull(h, 0, Color(0.0));
+  EXPECT_EQ(h.nodes[h.nodes[0].children[0]].B, Color(1.0, 2.0, 3.0) + 1.25 * Color(0.5))
+      << "B_leaf = source + gather_scale * (pushed + gathered): the scale multiplies what reaches the leaf, not its "
+         "source";
 }
 
 TEST(Ex13_4_PushPull, AParentHoldsTheAreaWeightedMeanOfItsChildren) {

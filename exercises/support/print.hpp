@@ -15,10 +15,12 @@
 #include "gi/accel/world.hpp"
 #include "gi/core/math.hpp"
 #include "gi/core/ray.hpp"
+#include "gi/core/samplers/sample_stream.hpp"
 #include "gi/geometry/aabb.hpp"
 #include "gi/radiosity/form_factors/hemicube.hpp"
+#include "gi/radiosity/hierarchical/oracle.hpp"
 #include "gi/radiosity/system/solver.hpp"
-#include "gi/raytrace/pixel_samplers.hpp"
+#include "gi/render/pixel_samplers.hpp"
 #include "gi/raytrace/soft_shadows.hpp"
 
 namespace gi::print {
@@ -60,12 +62,14 @@ inline void PrintTo(const vec3& v, std::ostream* os) { gi::print::vector(v, 3, o
 namespace gi {
 
 inline void PrintTo(SolveStatus s, std::ostream* os) { *os << status_name(s); }
+inline void PrintTo(Refinement r, std::ostream* os) { *os << name(r); }
 inline void PrintTo(HemicubeFace f, std::ostream* os) { print::name(f, {"Top", "PlusX", "MinusX", "PlusY", "MinusY"}, os); }
 inline void PrintTo(PrimitiveKind k, std::ostream* os) { print::name(k, {"Sphere", "Quad", "Triangle"}, os); }
 inline void PrintTo(Split s, std::ostream* os) { print::name(s, {"Sah", "Median"}, os); }
 inline void PrintTo(Acceleration a, std::ostream* os) { print::name(a, {"BruteForce", "BoundingBoxes", "Bvh"}, os); }
 inline void PrintTo(Sampler s, std::ostream* os) { print::name(s, {"centre", "grid", "random", "jittered", "adaptive"}, os); }
 inline void PrintTo(LightSampling s, std::ostream* os) { print::name(s, {"centre", "random", "jittered"}, os); }
+inline void PrintTo(SamplerKind k, std::ostream* os) { *os << sampler_name(k); }
 
 inline void PrintTo(const HemicubeCell& c, std::ostream* os) {
   *os << "{face ";

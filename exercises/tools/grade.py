@@ -3,20 +3,25 @@
     exercises/grade [--labs 1,2] [--json results.json] [--build-dir DIR] [--no-build] [--timeout S]
 
 The labs graded are those named, else those the kit was made for (exercises/KIT),
-else, in the full tree, all of them. Every graded test (exercises/labNN/*.cpp) is
-worth one point. Pass or fail comes from gtest's own report (see gtest_run.py);
-each exercise runs in one process, and only when that process hangs, crashes or
-ends early are its tests run one per process, so that the fault costs the test
-that caused it. After a test's first timeout the rest of its exercise is not run.
-The last line is `score: X/Y`, where Y counts every graded test of the chosen labs,
-built or not. Exit status: 0 when every lab built and ran, 1 when one did not (the
-score is still printed), 2 for a bad command line.
+else, in the full tree, all of them. Every graded test (exercises/labNN/*.cpp, and the
+instructor's labNN/hidden/*.cpp) is worth one point. Pass or fail comes from the test
+program's signed report (gtest_run.py), each run held by sandbox.py. Each exercise's
+tests run in one process; when it hangs, crashes, ends early or leaves something
+running, the test in progress fails with the reason, the tests it finished keep their
+results, and the rest run in a new process -- except after a timeout, when the rest of
+that exercise is not run. Every lab's visible tests run before any hidden one, so
+nothing a hidden test's run leaves behind can reach a visible result. The last line
+is `score: X/Y`, Y counting every graded test of the chosen labs, built or not.
+Exit status: 0 when every lab built and ran, 1 when one did not (the score is still
+printed), 2 for a bad command line.
 """
 import argparse
 import json
 import math
 import os
 import re
+import signal
+import stat
 import sys
 import tempfile
 from dataclasses import dataclass
@@ -26,6 +31,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import build      # noqa: E402
 import gtest_run  # noqa: E402
 import regions    # noqa: E402
+import sandbox    # noqa: E402
 from scores import gradescope, report, titles  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -36,8 +42,8 @@ TEST_MACRO = re.compile(r"^\s*TEST\(\s*(\w+)\s*,\s*(\w+)\s*\)", re.M)
 # slowest graded test takes 0.1 s in release and 1.9 s under the sanitizers (measured
 # on a loaded 2-core machine), so the limits are about 100 and 80 times the
 # reference's; a sanitizer or debug build (read from the build tree's CMakeCache.txt)
-# gets the longer one.
-LIMIT_RELEASE, LIMIT_SLOW_BUILD = 10.0, 150.0
+# gets the longer one. Below MIN_TIMEOUT a program cannot even start on a busy machine.
+LIMIT_RELEASE, LIMIT_SLOW_BUILD, MIN_TIMEOUT, MAX_TIMEOUT = 10.0, 150.0, 1.0, 3600.0
 
 
 class UsageError(Exception):
@@ -67,8 +73,8 @@ def labs_in(root):
 
 
 def source_tests(root, lab):
-    """[(test name, hidden)] as written in the lab's sources: the tests the program
-    should hold, known even when it does not build. Hidden tests live in hidden/."""
+    """[(test name, hidden)] as written in the lab's sources: the tests the programs
+    should hold, known even when they do not build. Hidden tests live in hidden/."""
     folder = Path(root) / "exercises" / f"lab{lab:02d}"
     found = []
     for hidden, pattern in ((False, "*.cpp"), (True, "hidden/*.cpp")):
@@ -99,60 +105,95 @@ def choose_labs(spec, root):
     return available, "every lab (the full tree)"
 
 
+def slow_build(build_dir):
+    cache = Path(build_dir) / "CMakeCache.txt"
+    text = cache.read_text(errors="replace") if cache.is_file() else ""
+    return bool(re.search(r"^GI_SANITIZE:BOOL=ON$", text, re.M) or
+                re.search(r"^CMAKE_BUILD_TYPE:STRING=Debug$", text, re.M))
+
+
 def time_limit(build_dir, timeout):
     if timeout is not None:
         return timeout
-    cache = Path(build_dir) / "CMakeCache.txt"
-    text = cache.read_text(errors="replace") if cache.is_file() else ""
-    slow = re.search(r"^GI_SANITIZE:BOOL=ON$", text, re.M) or re.search(r"^CMAKE_BUILD_TYPE:STRING=Debug$", text, re.M)
-    return LIMIT_SLOW_BUILD if slow else LIMIT_RELEASE
+    return LIMIT_SLOW_BUILD if slow_build(build_dir) else LIMIT_RELEASE
 
 
 def failed_all(lab, tests, hint):
     return [Result(lab, exercise_of(n, lab), n, False, hint, hint, hidden) for n, hidden in tests]
 
 
-def grade_lab(binary, lab, tests, limit, restubbed):
-    """(results, problem) of one lab. `tests`: [(name, hidden)] from the sources;
-    `problem` is "" unless the lab's program could not be run at all."""
-    hidden = {n for n, h in tests if h}
-    if not Path(binary).is_file():
-        problem = f"no test program {binary}: it was not built"
+def grade_program(runner, binary, lab, tests, limit, restubbed, hidden, together=False):
+    """(results, problem) of one of a lab's programs. `tests`: [(name, hidden)] from the
+    sources, those of this program; `problem` is "" unless the program could not run.
+    Each exercise's tests run in one process -- or, `together`, the whole program's
+    (the mutant suite: the course's own code, where a fault needs no more isolation)."""
+    names = [n for n, _ in tests]
+    if binary is None or not Path(binary).is_file():
+        problem = "its test program was not built"
         return failed_all(lab, tests, problem), problem
-    names, problem = gtest_run.list_tests(binary, limit)
-    if problem:
-        problem = f"the lab's test program {problem}"
-        return failed_all(lab, tests, problem), problem
-    names = sorted(names, key=lambda n: n in hidden)  # the student's own tests first
-    results = []
-    for exercise in dict.fromkeys(exercise_of(n, lab) for n in names):
-        mine = [n for n in names if exercise_of(n, lab) == exercise]
-        if exercise in restubbed:
-            hint = f"your code does not compile: {restubbed[exercise]}"
-            results += [Result(lab, exercise, n, False, hint, hint, n in hidden) for n in mine]
+    results, first = [], True
+    exercises = list(dict.fromkeys(exercise_of(n, lab) for n in names))
+    stubbed = [e for e in exercises if e in restubbed]
+    for exercise in stubbed:
+        why = restubbed[exercise]
+        hint = why if why.startswith("not taken") else f"your code does not compile: {why}"
+        results += [Result(lab, exercise, n, False, hint, hint, hidden) for n in names if exercise_of(n, lab) == exercise]
+    groups = [[n for n in names if exercise_of(n, lab) not in stubbed]] if together else \
+        [[n for n in names if exercise_of(n, lab) == e] for e in exercises if e not in stubbed]
+    for group in groups:
+        if not group:
             continue
-        run = gtest_run.run_tests(binary, mine, limit)
-        outcomes = run.outcomes if not run.problem else one_by_one(binary, mine, limit)
-        results += [Result(lab, exercise, n, o.passed, o.hint, o.detail, n in hidden) for n, o in outcomes.items()]
-    return results, ""
+        outcomes, problem = run_exercise(runner, binary, group, limit, first, lambda n: exercise_of(n, lab))
+        first = False
+        if problem:
+            problem = f"the lab's test program {problem}"
+            done = {r.name for r in results}
+            return results + failed_all(lab, [(n, hidden) for n in names if n not in done], problem), problem
+        results += [Result(lab, exercise_of(n, lab), n, o.passed, o.hint, o.detail, hidden) for n, o in outcomes.items()]
+    order = {n: k for k, n in enumerate(names)}
+    return sorted(results, key=lambda r: order[r.name]), ""
 
 
-def one_by_one(binary, names, limit):
-    """Each test in its own process; after a timeout the others are not run."""
-    outcomes, timed_out = {}, None
-    for name in names:
-        if timed_out:
-            outcomes[name] = gtest_run.Outcome(False, f"not run: {timed_out} of this exercise timed out")
-            continue
-        run = gtest_run.run_tests(binary, [name], limit)
-        if not run.problem:
-            outcomes[name] = run.outcomes[name]
-            continue
-        tail = "\n".join(run.output.strip().splitlines()[-20:])
-        outcomes[name] = gtest_run.Outcome(False, run.problem, f"{run.problem}\n{tail}".strip())
+def grade_lab(runner, build_dir, root, lab, limit, restubbed=None, together=False):
+    """(results, problems) of one lab's programs in a built tree, visible then hidden."""
+    results, problems = [], []
+    for kind, name in build.lab_targets(root, lab):
+        tests = [(n, h) for n, h in source_tests(root, lab) if h == (kind == "hidden")]
+        found, problem = grade_program(runner, Path(build_dir) / "bin" / name, lab, tests, limit, restubbed or {},
+                                       kind == "hidden", together)
+        results += found
+        problems += [problem] if problem else []
+    return results, problems
+
+
+def run_exercise(runner, binary, names, limit, first, exercise=lambda name: ""):
+    """({test: Outcome}, problem). The tests run in one process; a fault costs the test
+    in progress, and the rest run on in a new process -- after a timeout, except the
+    rest of the culprit's exercise, which is not run (they would likely hang too)."""
+    outcomes, remaining = {}, list(names)
+    while remaining:
+        run = runner.run_tests(binary, remaining, limit)
+        outcomes.update({n: o for n, o in run.outcomes.items() if n in remaining})
+        if first and not run.started and run.problem:
+            why = "hangs before its first test" if run.returncode is None else \
+                f"stops before its first test ({gtest_run.describe_exit(run.returncode)})"
+            return {}, why
+        first = False
+        progress = any(n in outcomes for n in remaining)
+        remaining = [n for n in remaining if n not in outcomes]
+        if not run.problem or not remaining:
+            break
+        if run.culprit not in remaining and progress:
+            continue  # it stopped between tests (the harness does, after a test left something): go on
+        culprit = run.culprit if run.culprit in remaining else remaining[0]
+        output = "\n".join(run.output.strip().splitlines()[-20:])
+        outcomes[culprit] = gtest_run.Outcome(False, run.problem, f"{run.problem}\n{output}".strip())
+        remaining.remove(culprit)
         if run.returncode is None:
-            timed_out = name.split(".")[-1]
-    return outcomes
+            for n in [n for n in remaining if exercise(n) == exercise(culprit)]:
+                outcomes[n] = gtest_run.Outcome(False, f"not run: {culprit.split('.')[-1]} of this exercise timed out")
+                remaining.remove(n)
+    return {n: outcomes[n] for n in names}, ""
 
 
 class OneLineParser(argparse.ArgumentParser):
@@ -166,35 +207,57 @@ class OneLineParser(argparse.ArgumentParser):
 
 def positive_seconds(text):
     try:
-        value = float(text)
+        value = float(text) if re.fullmatch(r"[0-9]+(\.[0-9]*)?|\.[0-9]+", text.strip()) else math.nan
     except ValueError:
-        raise argparse.ArgumentTypeError(f"--timeout takes seconds, got '{text}'")
-    if not (math.isfinite(value) and 0 < value <= 3600):
-        raise argparse.ArgumentTypeError(f"--timeout takes seconds in (0, 3600], got '{text}'")
+        value = math.nan
+    if not (MIN_TIMEOUT <= value <= MAX_TIMEOUT):
+        raise argparse.ArgumentTypeError(f"--timeout takes seconds from {MIN_TIMEOUT:g} to {MAX_TIMEOUT:g} "
+                                         f"(decimal digits), got '{text}'")
     return value
+
+
+def folder(text):
+    if not text.strip():
+        raise argparse.ArgumentTypeError("--build-dir takes a folder, got ''")
+    return Path(os.path.abspath(text))
 
 
 def parse(argv):
     parser = OneLineParser(prog="grade", description="Grade the exercises of the tree this script stands in.")
-    parser.add_argument("--labs", help="labs to grade, like 1,2 or 'all' (default: the kit's, else all)")
-    parser.add_argument("--json", help="write Gradescope's results.json here")
-    parser.add_argument("--build-dir", default=str(ROOT / "build" / "release"))
+    parser.add_argument("--labs", action="append", help="labs to grade, like 1,2 or 'all' (default: the kit's, else all)")
+    parser.add_argument("--json", help="write Gradescope's results.json here (a new file, or a regular file it replaces)")
+    parser.add_argument("--build-dir", type=folder, default=ROOT / "build" / "release")
     parser.add_argument("--no-build", action="store_true", help="use the graded tests already built")
-    parser.add_argument("--timeout", type=positive_seconds, help="seconds per test (default: fits the build type)")
+    parser.add_argument("--timeout", type=positive_seconds, help="seconds per test program run (default: fits the build type)")
     parser.add_argument("--hidden-visibility", default="after_published",
                         choices=["hidden", "after_due_date", "after_published", "visible"],
                         help="Gradescope visibility of the hidden tests' results")
     parser.add_argument("--expect", choices=["full", "zero"], help="exit 1 unless the score is full (or zero)")
-    return parser.parse_args(argv)
+    args = parser.parse_args(argv)
+    if args.labs is not None and len(args.labs) > 1:
+        raise UsageError("--labs is given more than once; name every lab in one list, like --labs 1,2")
+    args.labs = args.labs[0] if args.labs else None
+    return args
 
 
 def open_json(path):
-    """A temporary file beside --json, made now so that a bad path fails before grading."""
-    target = Path(path)
-    if target.is_dir():
-        raise UsageError(f"--json {path} is a folder")
+    """A temporary file beside --json, made now so that a bad path fails before grading.
+    The path must be new or name a regular file: never a folder, a device, a link."""
+    if not path.strip():
+        raise UsageError("--json takes a file name, got ''")
+    target = Path(os.path.abspath(path))
     try:
-        fd, temp = tempfile.mkstemp(prefix=f".{target.name}.", dir=target.parent if str(target.parent) else ".")
+        info = target.lstat()
+    except FileNotFoundError:
+        info = None
+    except OSError as e:
+        raise UsageError(f"cannot write --json {path}: {e.strerror}")
+    if info is not None and not stat.S_ISREG(info.st_mode):
+        kind = "a folder" if stat.S_ISDIR(info.st_mode) else "a link" if stat.S_ISLNK(info.st_mode) else \
+            "not a regular file"
+        raise UsageError(f"--json {path} is {kind}: name a new file or a regular one")
+    try:
+        fd, temp = tempfile.mkstemp(prefix=f".{target.name}.", dir=target.parent)
     except OSError as e:
         raise UsageError(f"cannot write --json {path}: {e.strerror}")
     os.close(fd)
@@ -203,16 +266,25 @@ def open_json(path):
 
 def write_json(temp, target, data):
     """Writes, then renames: a results.json is complete or absent."""
+    target = Path(os.path.abspath(target))
     try:
         temp.write_text(json.dumps(data, indent=2))
+        info = None
+        try:
+            info = target.lstat()
+        except FileNotFoundError:
+            pass
+        if info is not None and not stat.S_ISREG(info.st_mode):
+            raise OSError(0, f"{target} is no longer a regular file")
         os.replace(temp, target)
     except OSError as e:
         temp.unlink(missing_ok=True)
         raise build.BuildError(f"cannot write {target}: {e.strerror}")
 
 
-def grade(root, labs, build_dir, limit, do_build, say=print, quick=False, scratch=False):
-    """(results, problems): every chosen lab's results, built or not."""
+def grade(root, labs, build_dir, limit, do_build, say=print, quick=False, scratch=False, hide=None, runner=None):
+    """(results, problems, notes): every chosen lab's results, built or not; notes say
+    what the sandbox could not do here."""
     build_dir = Path(build_dir)
     built = build.Built(build_dir)
     if do_build:
@@ -222,49 +294,102 @@ def grade(root, labs, build_dir, limit, do_build, say=print, quick=False, scratc
             built.lab_errors = {lab: str(e) for lab in labs}
     elif not (build_dir / "bin").is_dir():
         raise build.BuildError(f"no built tree in {build_dir}: build the graded tests first, or drop --no-build")
-    results, problems = [], []
-    for lab in labs:
-        tests = source_tests(root, lab)
-        if lab in built.lab_errors:
-            problem = f"lab {lab} does not build: {built.lab_errors[lab]}"
-            results += failed_all(lab, tests, problem)
-        else:
-            lab_results, problem = grade_lab(built.binary_dir / "bin" / f"lab{lab:02d}_graded", lab, tests, limit,
-                                             built.restubbed)
-            results += lab_results
-        if problem:
-            problems.append(problem)
-    return results, problems
+    else:
+        built.binaries = {(lab, kind): build_dir / "bin" / name for lab in labs
+                          for kind, name in build.lab_targets(root, lab)}
+    own_runner = runner is None
+    runner = runner or gtest_run.Runner(hide=[root, build_dir] if hide is None else hide,
+                                        memory=None if slow_build(build_dir) else gtest_run.MEMORY)
+    by_lab, problems = {}, []
+    try:
+        for kind in ("graded", "hidden"):  # every visible test before any hidden one
+            for lab in labs:
+                tests = [(n, h) for n, h in source_tests(root, lab) if h == (kind == "hidden")]
+                if not tests:
+                    continue
+                if lab in built.lab_errors:
+                    problem = f"lab {lab} does not build: {built.lab_errors[lab]}"
+                    lab_results = failed_all(lab, tests, problem)
+                else:
+                    lab_results, problem = grade_program(runner, built.binaries.get((lab, kind)), lab, tests, limit,
+                                                         built.restubbed, kind == "hidden")
+                    problem = f"lab {lab}: {problem}" if problem else ""
+                by_lab.setdefault(lab, []).extend(lab_results)
+                if problem and problem not in problems:
+                    problems.append(problem)
+    finally:
+        if own_runner:
+            runner.close()
+    results = [r for lab in labs for r in by_lab.get(lab, [])]
+    notes = list(built.notes)
+    if missing_note(runner.missing):
+        notes.append(missing_note(runner.missing))
+    return results, problems, notes
+
+
+def missing_note(missing):
+    """What this system could not give the code under test, in one line (or "")."""
+    parts = ["verdicts read from gtest's own report, which the code under test could forge "
+             "(this system has no signed report)"] if "channel" in missing else []
+    note = sandbox.isolation_note(missing)
+    return "; ".join(parts + ([f"the tests ran with {note}"] if note else []))
+
+
+def stop(signum, frame):
+    raise KeyboardInterrupt
+
+
+_closing = []
+
+
+def closing_line(text):
+    """The run's one closing line on standard error: a signal that comes after it adds none."""
+    if not _closing:
+        _closing.append(text)
+        print(text, file=sys.stderr)
+
+
+def ignore_signals():
+    """From here on a signal cannot interrupt: the cleaning up, or the exit itself."""
+    for name in ("SIGINT", "SIGTERM", "SIGHUP"):
+        if hasattr(signal, name):
+            signal.signal(getattr(signal, name), signal.SIG_IGN)
 
 
 def main(argv):
     temp = None
+    for name in ("SIGTERM", "SIGHUP"):  # exercises/grade turns Ctrl-C into SIGTERM
+        if hasattr(signal, name):
+            signal.signal(getattr(signal, name), stop)
     try:
         args = parse(argv)
         labs, why = choose_labs(args.labs, ROOT)
         if not labs:
             raise UsageError("no lab to grade (the kit records none; name some with --labs)")
-        temp = open_json(args.json) if args.json else None
+        temp = open_json(args.json) if args.json is not None else None
         limit = time_limit(args.build_dir, args.timeout)
-        print(f"grading lab{'s' if len(labs) > 1 else ''} {', '.join(map(str, labs))}: {why}")
-        results, problems = grade(ROOT, labs, args.build_dir, limit, not args.no_build)
+        print(f"grading lab{'s' if len(labs) > 1 else ''} {', '.join(map(str, labs))}: {why}", flush=True)
+        results, problems, notes = grade(ROOT, labs, args.build_dir, limit, not args.no_build)
         names = titles(ROOT)
         score, total = sum(r.passed for r in results), len(results)
-        print(report(results, names))
+        print(build.relative(report(results, names), ROOT))
         for p in problems:
-            print(f"grade: {p}")
+            print(build.relative(f"grade: {p}", ROOT))
+        for n in notes:
+            print(f"grade: note: {n}")
         print(f"score: {score}/{total}")
         if temp:
-            write_json(temp, Path(args.json), gradescope(results, names, args.hidden_visibility))
+            write_json(temp, Path(args.json), gradescope(results, names, args.hidden_visibility, ROOT))
             temp = None
     except UsageError as e:
-        print(f"grade: error: {e} (try --help)", file=sys.stderr)
+        closing_line(f"grade: error: {e} (try --help)")
         return 2
     except (build.BuildError, regions.RegionError) as e:
-        print(f"grade: error: {e}", file=sys.stderr)
+        closing_line(f"grade: error: {e}")
         return 1
     except KeyboardInterrupt:
-        print("grade: interrupted", file=sys.stderr)
+        ignore_signals()  # a second one must not interrupt the cleaning up
+        closing_line("grade: interrupted")
         return 130
     finally:
         if temp:
@@ -279,4 +404,13 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    # A signal that comes as main returns (after an error line, say) ends the run as
+    # one does during it: one line, status 130, never a traceback from the exit.
+    try:
+        status = main(sys.argv[1:])
+        ignore_signals()
+    except KeyboardInterrupt:
+        ignore_signals()
+        closing_line("grade: interrupted")
+        status = 130
+    sys.exit(status)

@@ -17,6 +17,7 @@ never where a kit is expected.
 import argparse
 import os
 import shutil
+import signal
 import sys
 import tempfile
 from pathlib import Path
@@ -30,7 +31,8 @@ ROOT = Path(__file__).resolve().parents[2]
 # Kept out of kits: how the course tests its tests, grades with hidden tests, and makes kits.
 INSTRUCTOR_ONLY = ("exercises/mutants/", "exercises/autograder/", "exercises/make-kit", "exercises/tools/kit.py",
                    "exercises/tools/check_kit.py", "exercises/tools/check_autograder.py", "exercises/tools/mutants.py",
-                   "exercises/tools/submission.py",
+                   "exercises/tools/submission.py", "exercises/tools/check_harness.py", "exercises/support/harness_check.cpp",
+                   "exercises/tools/hostile.py",
                    "exercises/tools/test_")
 
 
@@ -40,6 +42,20 @@ class KitError(Exception):
 
 class UsageError(KitError):
     """A bad command line or destination: one line, exit status 2."""
+
+
+class Interrupted(Exception):
+    """A signal asked make-kit to stop: the partial copy is removed on the way out."""
+
+
+# A partial kit carries this file from its first moment, so that a later run removes
+# only stale partial copies it made itself.
+PARTIAL_MARK = ".make-kit-partial"
+
+
+def is_kit(folder):
+    """A folder make-kit wrote: it records its exercises in exercises/KIT."""
+    return (folder / "exercises" / "KIT").is_file() and not (folder / "exercises" / "KIT").is_symlink()
 
 
 def instructor_only(rel):
@@ -87,8 +103,11 @@ def check_destination(root, dest, force):
         raise UsageError(f"{dest} is inside the project; put the kit outside it or under build/")
     if dest.is_symlink() or (dest.exists() and not dest.is_dir()):
         raise UsageError(f"{dest} exists and is not a folder")
-    if dest.is_dir() and any(dest.iterdir()) and not force:
-        raise UsageError(f"{dest} exists and is not empty (--force replaces it)")
+    if dest.is_dir() and any(dest.iterdir()):
+        if not is_kit(dest):
+            raise UsageError(f"{dest} exists, is not empty and is no kit: make-kit replaces only a kit it made")
+        if not force:
+            raise UsageError(f"{dest} holds a kit (--force replaces it)")
 
 
 def write_kit(root, folder, punched, hidden=()):
@@ -131,10 +150,18 @@ def check_kit_text(root, folder, punched, hidden=()):
 
 
 def move_into_place(temp, dest):
-    """Renames the finished kit to dest; an existing dest (empty, or --force) goes."""
+    """Renames the finished kit to dest; an existing dest goes if empty, or if it is a
+    kit make-kit wrote (--force, checked before any work began)."""
+    (temp / PARTIAL_MARK).unlink()
     if not dest.exists():
         os.rename(temp, dest)
         return
+    if not any(dest.iterdir()):
+        dest.rmdir()
+        os.rename(temp, dest)
+        return
+    if not is_kit(dest):  # it changed while the kit was written: leave it alone
+        raise KitError(f"{dest} is no longer a kit; no kit was made")
     old = Path(tempfile.mkdtemp(prefix=f".{dest.name}.old-", dir=dest.parent))
     os.rename(dest, old / "kit")
     os.rename(temp, dest)
@@ -143,6 +170,8 @@ def move_into_place(temp, dest):
 
 def make_kit(root, dest, labs_spec, force=False):
     """Writes the kit; returns the punched regions."""
+    if not str(dest).strip():
+        raise UsageError("the destination is empty; name a new folder for the kit")
     root, dest = Path(root).resolve(), Path(os.path.abspath(dest))
     check_destination(root, dest.resolve(), force)
     all_regions = regions.find_regions(root)
@@ -152,22 +181,40 @@ def make_kit(root, dest, labs_spec, force=False):
         raise UsageError(str(e))
     punched = [r for r in all_regions if r.lab in labs]
     hidden = [r for r in regions.find_companions(root, all_regions) if r.lab in labs]
+    temp = None
     try:
-        dest.parent.mkdir(parents=True, exist_ok=True)
-        for stale in dest.parent.glob(f".{dest.name}.partial-*"):  # left by a run that was killed
-            shutil.rmtree(stale, ignore_errors=True)
-        temp = Path(tempfile.mkdtemp(prefix=f".{dest.name}.partial-", dir=dest.parent))
-    except OSError as e:
-        raise KitError(f"cannot write in {dest.parent}: {e.strerror}")
-    try:
-        write_kit(root, temp, punched, hidden)
-        check_kit_text(root, temp, punched, hidden)
-        move_into_place(temp, dest)
-    except OSError as e:
-        raise KitError(f"cannot write the kit in {dest.parent}: {e.strerror}; no kit was made")
+        try:
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            for stale in dest.parent.glob(f".{dest.name}.partial-*"):  # left by a run that was killed
+                if (stale / PARTIAL_MARK).is_file() and not stale.is_symlink():
+                    shutil.rmtree(stale, ignore_errors=True)
+            temp = Path(tempfile.mkdtemp(prefix=f".{dest.name}.partial-", dir=dest.parent))
+            (temp / PARTIAL_MARK).write_text("a kit being written by make-kit; removed when it is done\n")
+        except OSError as e:
+            raise KitError(f"cannot write in {dest.parent}: {e.strerror}")
+        try:
+            write_kit(root, temp, punched, hidden)
+            check_kit_text(root, temp, punched, hidden)
+            move_into_place(temp, dest)
+        except OSError as e:
+            raise KitError(f"cannot write the kit in {dest.parent}: {e.strerror}; no kit was made")
     finally:
-        shutil.rmtree(temp, ignore_errors=True)
+        if temp is not None:
+            with signals_held():
+                shutil.rmtree(temp, ignore_errors=True)
     return punched
+
+
+class signals_held:
+    """While the partial copy is removed, a second signal must not cut the removal short."""
+    NAMES = ("SIGTERM", "SIGHUP", "SIGINT", "SIGQUIT")
+
+    def __enter__(self):
+        self.saved = {n: signal.signal(getattr(signal, n), signal.SIG_IGN) for n in self.NAMES if hasattr(signal, n)}
+
+    def __exit__(self, *_):
+        for name, handler in self.saved.items():
+            signal.signal(getattr(signal, name), handler)
 
 
 class OneLineParser(argparse.ArgumentParser):
@@ -179,18 +226,28 @@ class OneLineParser(argparse.ArgumentParser):
         raise UsageError(f"{message} (try --help)")
 
 
+def stop(signum, frame):
+    raise Interrupted(signal.Signals(signum).name)
+
+
 def main(argv):
+    for name in signals_held.NAMES:  # each cleans the partial copy up on its way out
+        if hasattr(signal, name):
+            signal.signal(getattr(signal, name), stop)
     parser = OneLineParser(prog="make-kit", description="Write a student kit with exercises punched out.")
     parser.add_argument("dest", help="folder to create (must not exist, or be empty)")
     parser.add_argument("--labs", default="all", help="labs to punch out: 'all' or a list like 1,2")
-    parser.add_argument("--force", action="store_true", help="replace a DEST that is not empty")
+    parser.add_argument("--force", action="store_true", help="replace a DEST that holds a kit make-kit wrote")
     try:
         args = parser.parse_args(argv)
         punched = make_kit(ROOT, args.dest, args.labs, args.force)
     except (KitError, regions.RegionError) as e:
         print(f"make-kit: error: {e}", file=sys.stderr)
         return 2 if isinstance(e, UsageError) else 1
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, Interrupted):
+        for name in signals_held.NAMES:
+            if hasattr(signal, name):
+                signal.signal(getattr(signal, name), signal.SIG_IGN)
         print("make-kit: interrupted; no kit was made", file=sys.stderr)
         return 130
     for lab in sorted({r.lab for r in punched}):

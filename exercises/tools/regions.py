@@ -5,11 +5,14 @@
     // END EXERCISE 1.2
 
 A student kit keeps both marker lines and replaces what is between them by one
-line that throws gi::NotImplemented naming the exercise.
+line that throws gi::NotImplemented naming the exercise and passing the function's
+parameters (so that a stub uses them: no "unused parameter" warnings in a kit).
 """
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
+
+import cpp_text
 
 BEGIN = re.compile(r"^(\s*)// BEGIN EXERCISE (\d+)\.(\d+) (.+?)\s*$")
 END = re.compile(r"^\s*// END EXERCISE (\d+)\.(\d+)\s*$")
@@ -43,11 +46,13 @@ class Region:
         return f"{self.lab}.{self.number}"
 
     companion: bool = False  # KIT-HIDDEN WITH this exercise, not an exercise itself
+    parameters: list = field(default_factory=list)  # of the function the region sits in
 
     def stub(self):
-        if self.companion:
-            return f'{self.indent}throw gi::NotImplemented("{self.title}, left out of the kit with exercise {self.id},");\n'
-        return f'{self.indent}throw gi::NotImplemented("exercise {self.id} {self.title}");\n'
+        what = (f"{self.title}, left out of the kit with exercise {self.id}," if self.companion
+                else f"exercise {self.id} {self.title}")
+        passed = "".join(f", {name}" for name in self.parameters)
+        return f'{self.indent}throw gi::NotImplemented("{what}"{passed});\n'
 
 
 def regions_in(text, path, companions=False):
@@ -62,7 +67,8 @@ def regions_in(text, path, companions=False):
             if open_region:
                 raise RegionError(f"{path}:{i + 1}: BEGIN {word} inside {noun} {open_region.id}")
             indent, lab, number, title = begin.groups()
-            open_region = Region(path, i, -1, int(lab), int(number), title, indent, companions)
+            open_region = Region(path, i, -1, int(lab), int(number), title, indent, companions,
+                                 cpp_text.enclosing_parameters(text, i))
         elif end:
             ident = f"{int(end.group(1))}.{int(end.group(2))}"
             if not open_region:
@@ -126,13 +132,14 @@ def stub_text(text, regions):
 
 
 def parse_labs(spec, available):
-    """'all' or '1,2' -> the set of lab numbers, checked against those available."""
+    """'all' or '1,2' -> the set of lab numbers, checked against those available.
+    Numbers are ASCII decimal digits only ('١' is no lab number here)."""
     if spec is None or spec.strip() == "all":
         return set(available)
-    try:
-        labs = {int(part) for part in spec.split(",") if part.strip()}
-    except ValueError:
+    parts = [part.strip() for part in spec.split(",") if part.strip()]
+    if any(not re.fullmatch(r"[0-9]+", part) for part in parts):
         raise RegionError(f"--labs takes numbers like 1,2 or 'all', got '{spec}'")
+    labs = {int(part) for part in parts}
     if not labs:
         raise RegionError(f"--labs '{spec}' names no lab; give numbers like 1,2 or 'all'")
     unknown = labs - set(available)

@@ -18,6 +18,7 @@ import io
 import json
 import os
 import shutil
+import stat
 import sys
 import tempfile
 import zipfile
@@ -25,6 +26,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import build    # noqa: E402
+import cpp_text  # noqa: E402
 import grade    # noqa: E402
 import kit      # noqa: E402
 import regions  # noqa: E402
@@ -37,38 +39,84 @@ class SubmissionError(Exception):
     pass
 
 
-def find_file(submission, rel):
+MAX_FILE = 1 << 20  # bytes of one submitted file read
+MAX_ZIP_ENTRIES, MAX_ZIP_BYTES = 50000, 256 << 20  # a zip that unpacks to more is refused
+
+
+def regular_files(submission):
+    """{file name: [paths]} of the submission's regular files: never a link (to a file
+    or a folder, followed or not), a file with a second hard link, a device, or anything
+    under a build/ folder; the walk never leaves the submission."""
+    found = {}
+    for folder, subfolders, files in os.walk(submission, followlinks=False):
+        subfolders[:] = [d for d in subfolders if d != "build" and not os.path.islink(os.path.join(folder, d))]
+        for name in files:
+            path = Path(folder, name)
+            try:
+                info = path.lstat()
+            except OSError:
+                continue
+            if stat.S_ISREG(info.st_mode) and info.st_nlink == 1 and info.st_size <= MAX_FILE:
+                found.setdefault(name, []).append(path)
+    return found
+
+
+def find_file(submission, rel, files=None):
     """The submission's copy of a library file: the same path, or a path ending like
-    it (a kit inside a folder), or the only file of that name."""
-    files = [p for p in submission.rglob(rel.name) if p.is_file() and "build" not in p.relative_to(submission).parts]
-    exact = [p for p in files if p.relative_to(submission).as_posix().endswith(rel.as_posix())]
+    it (a kit inside a folder), or the only file of that name. Only regular files count."""
+    files = regular_files(submission) if files is None else files
+    candidates = files.get(rel.name, [])
+    exact = [p for p in candidates if p.relative_to(submission).as_posix().endswith(rel.as_posix())]
     if exact:
         return min(exact, key=lambda p: len(p.parts))
-    return files[0] if len(files) == 1 else None
+    return candidates[0] if len(candidates) == 1 else None
+
+
+def why_not_found(submission, rel):
+    """Why a file of that name was not taken: a link, a hard link, too large, or absent."""
+    for folder, _, names in os.walk(submission, followlinks=False):
+        if rel.name in names:
+            path = Path(folder, rel.name)
+            info = path.lstat()
+            if stat.S_ISLNK(info.st_mode):
+                return f"{path.relative_to(submission)} is a link: only regular files are taken"
+            if info.st_nlink > 1:
+                return f"{path.relative_to(submission)} has a second hard link: only plain files are taken"
+            if info.st_size > MAX_FILE:
+                return f"{path.relative_to(submission)} is larger than {MAX_FILE >> 20} MB"
+    return f"no {rel} in the submission"
 
 
 def take_regions(submission, tree, labs):
-    """Stubs every region of `labs` in `tree`, then fills in the submission's code.
+    """Stubs every region of `labs` in `tree`, then fills in the submission's code: the
+    text between its markers, taken only if it reads as a function body (cpp_text.py).
     Returns {exercise: why it was not taken} for the exercises left stubbed."""
+    submission = Path(submission)
     chosen = [r for r in regions.find_regions(tree) if r.lab in labs]
+    files = regular_files(submission)
     missing = {}
     for rel in sorted({r.path for r in chosen}):
         mine = [r for r in chosen if r.path == rel]
         text = regions.stub_text((tree / rel).read_text(), mine)
-        theirs, found = find_file(submission, rel), {}
+        theirs, found = find_file(submission, rel, files), {}
         if theirs is None:
-            missing.update({r.id: f"no {rel} in the submission" for r in mine})
+            missing.update({r.id: why_not_found(submission, rel) for r in mine})
         else:
             try:
-                their_text = theirs.read_text(errors="replace")
+                their_text = theirs.read_bytes().decode("utf-8", errors="replace")
                 found = {r.id: r for r in regions.regions_in(their_text, rel)}
-            except regions.RegionError as e:
+            except (OSError, regions.RegionError) as e:
                 missing.update({r.id: f"its exercise markers are broken ({e})" for r in mine})
         for r in sorted(mine, key=lambda r: r.begin, reverse=True):
             if r.id not in found:
                 missing.setdefault(r.id, f"no region 'BEGIN EXERCISE {r.id}' in {theirs.name if theirs else rel}")
                 continue
             body = their_text.splitlines(keepends=True)[found[r.id].begin + 1:found[r.id].end]
+            try:
+                cpp_text.check_body("".join(body))
+            except cpp_text.TextError as e:
+                missing[r.id] = f"not taken as written: {e}"
+                continue
             lines = text.splitlines(keepends=True)
             here = next(x for x in regions.regions_in(text, rel) if x.id == r.id)
             lines[here.begin + 1:here.end] = body
@@ -77,19 +125,34 @@ def take_regions(submission, tree, labs):
     return missing
 
 
-def grade_one(submission, labs, work, say=print):
-    """(results, notes) for one submission, built in work/src and work/build."""
+def grade_one(submission, labs, work, say=print, hide=()):
+    """(results, notes) for one submission, built in work/src and work/build. The
+    sandbox covers `hide` (with the tree and its build) from the code it runs."""
     tree = work / "src"
     build.sync_tree(ROOT, tree)
     missing = take_regions(Path(submission), tree, labs)
     notes = [f"exercise {ident} not graded as written: {why}" for ident, why in sorted(missing.items())]
     for note in notes:
         say(f"grade: {note}")
-    results, problems = grade.grade(tree, labs, work / "build", grade.time_limit(work / "build", None), True, say,
-                                    quick=True, scratch=True)
+    results, problems, sandbox_notes = grade.grade(
+        tree, labs, work / "build", grade.time_limit(work / "build", None), True, say, quick=True, scratch=True,
+        hide=[ROOT, work, *hide])
     broken = {r.exercise: r.hint for r in results if r.hint.startswith("your code does not compile")}
     notes += [f"exercise {ident}: {hint}" for ident, hint in sorted(broken.items())]
-    return results, notes + problems
+    clean = [build.relative(build.relative(n, tree), ROOT) for n in notes + problems]
+    for r in results:
+        r.hint, r.detail = (build.relative(build.relative(x, tree), ROOT) for x in (r.hint, r.detail))
+    return results, clean, sandbox_notes
+
+
+def lock_away(*folders):
+    """As root, makes the folders reachable by root only: the user the tests run as may
+    not read the instructor's tree (hidden tests, the reference, the build) nor touch
+    the results."""
+    if os.name == "posix" and os.geteuid() == 0:
+        for folder in folders:
+            if Path(folder).is_dir():
+                os.chmod(folder, 0o700)
 
 
 def write_atomically(path, text):
@@ -124,16 +187,23 @@ def prepare(source):
 
 
 def gradescope(root):
-    """Gradescope's run_autograder: /autograder/submission in, results/results.json out."""
+    """Gradescope's run_autograder: /autograder/submission in, results/results.json out.
+    The results are written after every process the submission started is gone."""
     source = root / "source"
     config = json.loads((source / CONFIG).read_text())
     work = work_folder(source)
-    results, notes = grade_one(root / "submission", config["labs"], work)
-    data = grade.gradescope(results, grade.titles(ROOT), config.get("hidden_visibility", "after_published"))
+    results_dir = root / "results"
+    results_dir.mkdir(parents=True, exist_ok=True)
+    lock_away(source, work, results_dir)
+    results, notes, sandbox_notes = grade_one(root / "submission", config["labs"], work, hide=[results_dir])
+    data = grade.gradescope(results, grade.titles(ROOT), config.get("hidden_visibility", "after_published"), source)
     if notes:
         data["output"] = "\n".join(notes) + "\n\n" + data["output"]
-    (root / "results").mkdir(parents=True, exist_ok=True)
-    write_atomically(root / "results" / "results.json", json.dumps(data, indent=2))
+    for note in sandbox_notes:
+        print(f"autograder: note: {note}")  # for the instructor's log: stdout is hidden from students
+    if results_dir.is_symlink() or not results_dir.is_dir():
+        raise SubmissionError(f"{results_dir} is not a folder of the autograder's")
+    write_atomically(results_dir / "results.json", json.dumps(data, indent=2))
     print(data["output"])
     return 0
 
@@ -155,12 +225,18 @@ def folder(submissions, labs, csv_path, work):
             if entry.suffix == ".zip":
                 try:
                     with zipfile.ZipFile(entry) as z:
-                        z.extractall(unpacked)
+                        sizes = [info.file_size for info in z.infolist()]
+                        if len(sizes) > MAX_ZIP_ENTRIES or sum(sizes) > MAX_ZIP_BYTES:
+                            raise zipfile.BadZipFile(f"more than {MAX_ZIP_ENTRIES} files or "
+                                                     f"{MAX_ZIP_BYTES >> 20} MB unpacked")
+                        z.extractall(unpacked)  # names with .. or a leading / stay inside; links come out as files
                     path = Path(unpacked)
                 except (zipfile.BadZipFile, OSError) as e:
                     path, notes = None, [f"unreadable zip: {e}"]
             if path is not None:
-                results, notes = grade_one(path, labs, work, say=lambda line: print(f"   {line}"))
+                results, notes, sandbox_notes = grade_one(path, labs, work, say=lambda line: print(f"   {line}"))
+                for note in sandbox_notes:
+                    print(f"   note: {note}")
         points = [sum(r.passed for r in results if r.exercise == e) for e in exercises]
         print(f"   score: {sum(points)}/{len(tests)}")
         rows.append([entry.stem] + points + [sum(points), len(tests), "; ".join(notes)])

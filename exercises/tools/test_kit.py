@@ -17,7 +17,7 @@ import kit      # noqa: E402
 import regions  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
-MAKE_KIT = [sys.executable, str(ROOT / "exercises" / "make-kit")]
+MAKE_KIT = [str(ROOT / "exercises" / "make-kit")]  # as an instructor runs it
 
 SOURCE = """#include "gi/core/not_implemented.hpp"
 double twice(double x) {
@@ -87,6 +87,38 @@ class Destinations(unittest.TestCase):
             self.assert_refused(self.make_kit(f"{tmp}/full"))
             self.assertEqual(Path(f"{tmp}/full/keep").read_text(), "x")
 
+    def test_force_replaces_only_a_kit_it_made(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            home = Path(tmp) / "home"
+            (home / ".ssh").mkdir(parents=True)
+            (home / ".ssh" / "id_ed25519").write_text("a key")
+            done = self.make_kit(str(home), "--labs", "1", "--force")
+            self.assert_refused(done)
+            self.assertIn("is no kit", done.stderr)
+            self.assertEqual((home / ".ssh" / "id_ed25519").read_text(), "a key")
+            kit_dir = Path(tmp) / "kit"
+            self.assertEqual(self.make_kit(str(kit_dir), "--labs", "1").returncode, 0)
+            self.assert_refused(self.make_kit(str(kit_dir), "--labs", "1"))  # a kit, but no --force
+            (kit_dir / "mine.txt").write_text("mine")
+            self.assertEqual(self.make_kit(str(kit_dir), "--labs", "2", "--force").returncode, 0)
+            self.assertIn("2.1", (kit_dir / "exercises" / "KIT").read_text())
+
+    def test_refuses_an_empty_destination(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            (Path(tmp) / "keep").write_text("x")
+            done = subprocess.run(MAKE_KIT + ["", "--force"], capture_output=True, text=True, cwd=tmp, timeout=300)
+            self.assert_refused(done)
+            self.assertNotIn("kit written", done.stdout)
+            self.assertEqual(sorted(p.name for p in Path(tmp).iterdir()), ["keep"])
+
+    def test_a_stale_partial_folder_it_did_not_make_is_left_alone(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            mine = Path(tmp) / ".kit.partial-mine"
+            mine.mkdir()
+            (mine / "notes").write_text("not a kit")
+            self.assertEqual(self.make_kit(f"{tmp}/kit", "--labs", "1").returncode, 0)
+            self.assertEqual((mine / "notes").read_text(), "not a kit")
+
     def test_read_only_destination(self):
         mount = Mount("ro,size=64k")
         try:
@@ -110,15 +142,29 @@ class Destinations(unittest.TestCase):
         finally:
             mount.close()
 
+    def test_signals_it_can_catch_leave_nothing_behind(self):
+        for sig in (signal.SIGTERM, signal.SIGHUP, signal.SIGINT):
+            with tempfile.TemporaryDirectory() as tmp:
+                for delay in (0.5, 1.0, 2.0):
+                    run = subprocess.Popen(MAKE_KIT + [f"{tmp}/kit", "--labs", "1", "--force"],
+                                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+                    time.sleep(delay)
+                    run.send_signal(sig)
+                    _, err = run.communicate(timeout=120)
+                    self.assertNotIn("Traceback", err)
+                    left = sorted(p.name for p in Path(tmp).iterdir())
+                    self.assertIn(left, ([], ["kit"]), f"{sig.name} after {delay} s left {left}")
+
     def test_killed_runs_never_leave_a_kit_with_solutions(self):
         with tempfile.TemporaryDirectory() as tmp:
             dest = Path(tmp) / "kit"
             for delay in (0.3, 0.6, 1.0):
                 run = subprocess.Popen(MAKE_KIT + [str(dest), "--labs", "1"], stdout=subprocess.DEVNULL,
-                                       stderr=subprocess.DEVNULL)
+                                       stderr=subprocess.DEVNULL, start_new_session=True)
                 time.sleep(delay)
-                run.send_signal(signal.SIGKILL)
+                os.killpg(run.pid, signal.SIGKILL)  # kill -9 of the job: the script and the Python it runs
                 run.wait()
+                time.sleep(0.2)  # the kernel is done with them
                 if dest.exists():  # it finished before the kill: then it is a whole, checked kit
                     self.assertTrue((dest / "exercises" / "KIT").is_file())
                     self.assertIn("throw gi::NotImplemented", (dest / "lib/gi/geometry/sphere.cpp").read_text())
@@ -161,7 +207,8 @@ class Contents(unittest.TestCase):
             kit.make_kit(root, Path(tmp) / "kit", "3")
             text = (Path(tmp) / "kit" / "lib" / "fast.cpp").read_text()
             self.assertNotIn("shifted_twice", text)
-            self.assertIn('throw gi::NotImplemented("the fast doubling, left out of the kit with exercise 3.1,");', text)
+            self.assertIn('throw gi::NotImplemented("the fast doubling, left out of the kit with exercise 3.1,", x);',
+                          text)
             self.assertEqual((Path(tmp) / "kit" / "exercises" / "KIT").read_text(), "3.1 doubling\n",
                              "hidden code is no exercise of its own")
         (root / "lib" / "fast.cpp").write_text((root / "lib" / "fast.cpp").read_text().replace("3.1", "3.2"))

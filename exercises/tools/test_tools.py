@@ -1,14 +1,19 @@
 """Unit tests of the exercise tools on small made-up trees, and checks of the graded
 tests and handouts themselves (ctest: exercise_tools)."""
 import re
+import shutil
+import subprocess
 import sys
 import tempfile
 import unittest
+import zipfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import build     # noqa: E402
+import cpp_text  # noqa: E402
 import excerpts  # noqa: E402
+import hand_in   # noqa: E402
 import grade     # noqa: E402
 import mutants   # noqa: E402
 import regions   # noqa: E402
@@ -30,7 +35,8 @@ class Regions(unittest.TestCase):
         found = regions.regions_in(SOURCE, "a.cpp")
         self.assertEqual([(r.id, r.title, r.begin, r.end) for r in found], [("3.1", "doubling", 2, 5)])
         stubbed = regions.stub_text(SOURCE, found)
-        self.assertIn('  throw gi::NotImplemented("exercise 3.1 doubling");\n', stubbed)
+        self.assertIn('  throw gi::NotImplemented("exercise 3.1 doubling", x);\n', stubbed,
+                      "the stub passes the function's parameters, so that a kit has no unused-parameter warning")
         self.assertNotIn("x + x", stubbed)
         self.assertIn("// END EXERCISE 3.1", stubbed)
 
@@ -45,10 +51,86 @@ class Regions(unittest.TestCase):
     def test_lab_lists(self):
         self.assertEqual(regions.parse_labs("all", {1, 2}), {1, 2})
         self.assertEqual(regions.parse_labs("2", {1, 2}), {2})
+        for bad in ("\u0661", "\uff12", "1,\u0662", "0x1", "+1", "1.0", "1e0"):
+            with self.assertRaisesRegex(regions.RegionError, "takes numbers"):
+                regions.parse_labs(bad, {1, 2})
         with self.assertRaisesRegex(regions.RegionError, "no lab 7"):
             regions.parse_labs("1,7", {1, 2})
         with self.assertRaisesRegex(regions.RegionError, "names no lab"):
             regions.parse_labs(",", {1, 2})
+
+
+class RegionText(unittest.TestCase):
+    """What the autograder and the grader accept between a region's markers: statements
+    of the function it sits in, nothing that leaves it (cpp_text.py)."""
+
+    ACCEPTED = [
+        "  double t = 1'000.5e-3, u = 0x1p-3;\n  return t + u;\n",
+        '  auto s = R"x(}}} # %> )x"; char c = \'}\'; // } #include\n  /* } %> */ return 0;\n',
+        "  if (x) {\n    for (int i = 0; i < 3; ++i) { y += i; }\n  }\n  auto f = [&](int k) { return k; };\n",
+        '  std::string hash = "#define"; auto q = u8"%:";\n',
+        "  static const int table[] = {1, 2, 3};  // a static local: built on the first call, inside the function\n",
+    ]
+    REFUSED = {
+        "  return 1;\n}\nstatic int x = f();\nvoid g() {\n": "closes the function",
+        "  return 1;\n%>\nint y;\n<%\n": "closes the function",
+        "  return {};\n}\n[[gnu::constructor]] void forge() {\n": "closes the function",
+        '#include "/autograder/source/lib/gi/geometry/sphere.cpp"\n': "preprocessor",
+        "  %:define X 1\n": "preprocessor",
+        "  x = 1;\n  #\\\ninclude <cstdio>\n": "preprocessor",
+        "  _Pragma(\"GCC poison x\")\n": "_Pragma",
+        '  asm volatile("nop");\n': "asm",
+        '  __asm__("nop");\n': "__asm__",
+        "  x = 1; /* a comment left open\n": "not closed",
+        '  auto s = "a string left open;\n': "not closed",
+        '  auto s = R"(a raw string left open;\n': "not closed",
+        "  if (x) {\n": "not closed",
+        "  x = 1; \\\n": "line splice",
+        "  import std;\n": "module",
+    }
+
+    def test_statements_are_accepted(self):
+        for text in self.ACCEPTED:
+            cpp_text.check_body(text)
+
+    def test_what_leaves_the_function_is_refused_with_the_reason(self):
+        for text, why in self.REFUSED.items():
+            with self.assertRaisesRegex(cpp_text.TextError, why, msg=text):
+                cpp_text.check_body(text)
+
+    def test_every_region_of_the_reference_is_a_function_body(self):
+        for r in regions.find_regions(ROOT):
+            cpp_text.check_body("".join(regions.body(ROOT, r)))
+
+    def test_the_parameters_of_the_function_a_region_sits_in(self):
+        text = ("std::optional<Hit> intersect(const Ray& ray, const Sphere& sphere) {\n  // BEGIN EXERCISE 1.1 x\n"
+                "  // END EXERCISE 1.1\n}\n"
+                "auto f(int n, std::vector<std::pair<int, int>> pairs, const double = 1.0, Rng& rng) -> int {\n"
+                "  for (int i = 0; i < n; ++i) {\n    // here\n  }\n}\n"
+                "void g(const Sphere) {\n  auto h = [&](double t) {\n    // here\n  };\n}\n")
+        self.assertEqual(cpp_text.enclosing_parameters(text, 1), ["ray", "sphere"])
+        self.assertEqual(cpp_text.enclosing_parameters(text, 6), ["n", "pairs", "rng"])
+        self.assertEqual(cpp_text.enclosing_parameters(text, 11), ["t"], "inside a lambda: its own parameters only")
+        self.assertEqual(cpp_text.enclosing_parameters(text, 0), [])
+
+
+class HandIn(unittest.TestCase):
+    def test_the_zip_holds_the_files_with_exercises_and_no_build_product(self):
+        root = Path(tempfile.mkdtemp())
+        (root / "lib").mkdir()
+        (root / "lib" / "a.cpp").write_text(SOURCE)
+        (root / "lib" / "b.cpp").write_text("int b() { return 1; }\n")
+        (root / "exercises").mkdir()
+        (root / "exercises" / "KIT").write_text("3.1 doubling\n")
+        (root / "build" / "release").mkdir(parents=True)
+        (root / "build" / "release" / "big.o").write_bytes(b"x" * 100000)
+        out, files = hand_in.write_zip(root, root / "hand-in.zip")
+        with zipfile.ZipFile(out) as z:
+            self.assertEqual(sorted(z.namelist()), ["exercises/KIT", "lib/a.cpp"])
+        (root / "lib" / "a.cpp").unlink()
+        (root / "lib" / "a.cpp").symlink_to("/etc/hostname")
+        with self.assertRaisesRegex((hand_in.HandInError, regions.RegionError, OSError), "."):
+            hand_in.write_zip(root, root / "hand-in.zip")
 
 
 class Excerpts(unittest.TestCase):
@@ -101,7 +183,7 @@ class BuildErrors(unittest.TestCase):
     def test_restub_puts_the_stub_back(self):
         root = self.tree()
         build.restub(root, {"3.1"})
-        self.assertIn('throw gi::NotImplemented("exercise 3.1 doubling");', (root / "lib" / "a.cpp").read_text())
+        self.assertIn('throw gi::NotImplemented("exercise 3.1 doubling", x);', (root / "lib" / "a.cpp").read_text())
 
 
 class Mutants(unittest.TestCase):
@@ -137,6 +219,60 @@ Triples instead of doubling.
     def test_every_mutant_in_the_repository_applies(self):
         for m in mutants.load(sorted((ROOT / "exercises" / "mutants").glob("*.mut"))):
             self.assertNotEqual(mutants.apply((ROOT / m.file).read_text(), m), (ROOT / m.file).read_text(), m.id)
+
+
+LIBRARY = {
+    "CMakeLists.txt": "cmake_minimum_required(VERSION 3.20)\nproject(t CXX)\nset(CMAKE_RUNTIME_OUTPUT_DIRECTORY "
+                      "${CMAKE_BINARY_DIR}/bin)\nadd_library(twice STATIC lib/twice.cpp lib/other.cpp)\n"
+                      "target_include_directories(twice PUBLIC lib)\nadd_executable(lab03_graded main.cpp)\n"
+                      "target_link_libraries(lab03_graded twice)\n",
+    "lib/twice.hpp": "#pragma once\n#include <vector>\ndouble twice(double x);\ndouble other();\n",
+    "lib/twice.cpp": '#include "twice.hpp"\n\n#include <string>\n' + SOURCE,
+    "lib/gi/core/not_implemented.hpp": "#pragma once\n",
+    "lib/other.cpp": '#include "twice.hpp"\ndouble other() { return 1; }\n',
+    "main.cpp": '#include <cstdio>\n#include "twice.hpp"\nint main() { std::printf("%g\\n", twice(2) + other()); }\n',
+}
+
+
+@unittest.skipUnless(shutil.which("cmake") and shutil.which("ninja") and shutil.which("c++"), "needs cmake, ninja, c++")
+class MutantBuilds(unittest.TestCase):
+    """A mutant is built in an overlay of its own, with and without its file's
+    precompiled preamble, and the reference's build is left as it was."""
+
+    def test_an_overlay_holds_the_mutant_and_the_reference_build_is_untouched(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            work = Path(tmp)
+            for rel, text in LIBRARY.items():
+                (work / "src" / rel).parent.mkdir(parents=True, exist_ok=True)
+                (work / "src" / rel).write_text(text)
+            for argv in (["cmake", "-S", work / "src", "-B", work / "build", "-G", "Ninja"],
+                         ["cmake", "--build", work / "build"]):
+                subprocess.run(argv, check=True, capture_output=True)
+            [m] = mutants.parse(Mutants.TEXT.replace("a.cpp", "lib/twice.cpp"), "t.mut")
+            [broken] = mutants.parse(Mutants.TEXT.replace("a.cpp", "lib/twice.cpp").replace("x + x + x", "x +"),
+                                     "t.mut")
+            reference = mutants.Reference(work)
+            preambles, plain = mutants.Preambles(work, [m, broken]), mutants.Preambles(work, [m])
+            plain.made[m.file] = None  # as for a header: no preamble
+            self.assertEqual(mutants.leading_includes(LIBRARY["lib/twice.cpp"]),
+                             '#include "twice.hpp"\n\n#include <string>\n#include "gi/core/not_implemented.hpp"\n')
+            for k, made in enumerate((preambles, plain)):
+                program, problem = mutants.build_program(m, "lab03_graded", reference, f"overlays/{k}", made)
+                self.assertEqual(problem, "")
+                self.assertEqual(subprocess.run([program], capture_output=True, text=True).stdout, "7\n", "3 x 2 + 1")
+                made.done_with(m.file)
+            header = preambles.made[m.file]
+            self.assertIsNotNone(header, "the preamble was made")
+            self.assertTrue(Path(f"{header}.gch").is_file())
+            program, problem = mutants.build_program(broken, "lab03_graded", reference, "overlays/2", preambles)
+            self.assertIsNone(program)
+            self.assertRegex(problem, r"^does not compile: .*twice\.cpp:\d+:\d*:? ?error")
+            preambles.done_with(broken.file)
+            self.assertFalse(Path(f"{header}.gch").exists(), "removed after its file's last mutant")
+            self.assertEqual(subprocess.run([work / "build" / "bin" / "lab03_graded"], capture_output=True,
+                                            text=True).stdout, "5\n", "the reference's program is the reference's")
+            done = subprocess.run(["ninja", "-C", work / "build", "-n"], capture_output=True, text=True)
+            self.assertIn("no work to do", done.stdout, "the reference's build is not changed")
 
 
 MACRO = re.compile(r"\b(EXPECT|ASSERT)_[A-Z_]+\s*\(")

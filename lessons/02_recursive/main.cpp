@@ -41,11 +41,11 @@ std::vector<gi::Cell> ray_row(const gi::Cell& first, const gi::RenderResult& r, 
 }
 
 // Renders `repeat` times and keeps the run with the median time.
-gi::RenderResult render_median(const gi::World& world, const gi::RenderSettings& settings, int repeat,
+gi::RenderResult render_median(const gi::World& world, const gi::RenderSettings& settings, int repeat, int threads,
                                gi::Progress* progress = nullptr) {
   std::vector<gi::RenderResult> runs;
   for (int i = 0; i < repeat; ++i) {
-    runs.push_back(gi::render(world, settings));
+    runs.push_back(gi::render(world, settings, 1, threads));
     if (progress) progress->advance();
   }
   std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
@@ -67,13 +67,14 @@ gi::View view(const gi::World& world, const gi::RenderSettings& settings) {
 // Depth limits 0..max_depth against the reference; writes each image.
 Sweep depth_sweep(const gi::World& world, gi::RenderSettings settings, int max_depth, int repeat,
                   const gi::RenderResult& reference, gi::Lesson& lesson, gi::Progress& progress) {
+  const int threads = lesson.threads();
   Sweep sweep{gi::Table("Depth limits, scene " + world.scene.name + " (reference: depth " +
                             std::to_string(settings.trace.max_depth) + ")",
                         ray_columns("depth")),
               {"depth limit 0.." + std::to_string(max_depth), {}, {}}};
   for (int depth = 0; depth <= max_depth; ++depth) {
     settings.trace.max_depth = depth;
-    const gi::RenderResult r = render_median(world, settings, repeat, &progress);
+    const gi::RenderResult r = render_median(world, settings, repeat, threads, &progress);
     sweep.table.add_row(ray_row(depth, r, &reference.image));
     sweep.series.x.push_back(1e3 * r.seconds);
     sweep.series.y.push_back(gi::rmse(r.image, reference.image));
@@ -89,13 +90,13 @@ Sweep depth_sweep(const gi::World& world, gi::RenderSettings settings, int max_d
 
 // Contribution thresholds at the reference's depth limit.
 Sweep threshold_sweep(const gi::World& world, gi::RenderSettings settings, const std::vector<double>& thresholds,
-                      int repeat, const gi::RenderResult& reference, gi::Progress& progress) {
+                      int repeat, int threads, const gi::RenderResult& reference, gi::Progress& progress) {
   Sweep sweep{gi::Table("Contribution thresholds at depth limit " + std::to_string(settings.trace.max_depth),
                         ray_columns("threshold")),
               {"contribution threshold", {}, {}}};
   for (double threshold : thresholds) {
     settings.trace.min_contribution = threshold;
-    const gi::RenderResult r = render_median(world, settings, repeat, &progress);
+    const gi::RenderResult r = render_median(world, settings, repeat, threads, &progress);
     sweep.table.add_row(ray_row(threshold, r, &reference.image));
     sweep.series.x.push_back(1e3 * r.seconds);
     sweep.series.y.push_back(gi::rmse(r.image, reference.image));
@@ -133,14 +134,15 @@ int main(int argc, char** argv) {
       .add("--max-depth", max_depth, "sweep depth limits 0..N", 0, 40)
       .add("--reference-depth", reference_depth, "depth limit of the reference render", 1, 60)
       .add_optional("--depth", single_depth, "render once at this depth limit instead of the sweep", 0, 60)
-      .add("--repeat", repeat, "renders per measurement; the median time is reported", 1, 50);
+      .add("--repeat", repeat, "renders per measurement; the median time is reported", 1, 50)
+      .add_flag("--fast-queries", settings.trace.fast_queries,
+                "ray queries and local shading by the tuned *_fast files (world_fast.cpp, whitted_fast.cpp): the same picture, sooner");
   return lesson.run(argc, argv, [&] {
-    settings.threads = lesson.threads();
     const gi::World world = gi::make_world(scene, gi::acceleration_from_name(accel));
 
     if (single_depth) {  // one render, for timing against another renderer
       settings.trace.max_depth = *single_depth;
-      const gi::RenderResult r = render_median(world, settings, repeat);
+      const gi::RenderResult r = render_median(world, settings, repeat, lesson.threads());
       const std::string stem = gi::file_stem(scene.name) + "_depth_" + std::to_string(*single_depth);
       gi::Table table("Scene " + scene.name + ", depth limit " + std::to_string(*single_depth) + ", " +
                           std::to_string(settings.width) + "x" + std::to_string(settings.height) + ", median of " +
@@ -156,12 +158,12 @@ int main(int argc, char** argv) {
     const std::vector<double> thresholds{0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.003, 0.001};
     gi::Progress progress("rendering", 1 + (max_depth + 1 + static_cast<long long>(thresholds.size())) * repeat);
     settings.trace.max_depth = reference_depth;
-    const gi::RenderResult reference = gi::render(world, settings);
+    const gi::RenderResult reference = gi::render(world, settings, 1, lesson.threads());
     progress.advance();
     lesson.picture(reference.image, "reference", "the reference: depth limit " + std::to_string(reference_depth),
                    view(world, settings));
     const Sweep depths = depth_sweep(world, settings, max_depth, repeat, reference, lesson, progress);
-    const Sweep cutoffs = threshold_sweep(world, settings, thresholds, repeat, reference, progress);
+    const Sweep cutoffs = threshold_sweep(world, settings, thresholds, repeat, lesson.threads(), reference, progress);
     progress.finish();
 
     lesson.table(depths.table, "depth_limits");

@@ -1,8 +1,10 @@
 // 02_tachyon_bench: not a lesson. Our Whitted tracer against Tachyon, John E. Stone's
 // production ray tracer (Debian's tachyon-bin-nox), on s10 -- ten spheres on a
 // checkered plane, two lights, a mirror and a glass ball -- at 800 x 600 and depth
-// limit 8: the picture `02_recursive --scene s10 --depth 8` renders, whose Tachyon twin
-// is lessons/scenes/s10.tachyon.dat. The two take turns, round after round (ours on
+// limit 8: the picture `02_recursive --scene s10 --depth 8 --fast-queries` renders (the
+// tuned ray queries and local shading of accel/world_fast.cpp and raytrace/whitted_fast.cpp;
+// --plain-queries for the textbook's, the same picture), whose Tachyon twin is
+// lessons/scenes/s10.tachyon.dat. The two take turns, round after round (ours on
 // one thread, Tachyon on one, ours on N, Tachyon on N), so that a busy moment of a
 // shared machine falls on both. Each program's own clock of its render is read: ours
 // is the render loop's (lesson 02's `ms` column), Tachyon's the "Ray Tracing Time" it
@@ -10,7 +12,8 @@
 // fastest and slowest of --runs renders each, the ratio of the medians, N threads
 // against one, both programs' versions and the machine's load at the start and the
 // end. Needs `tachyon` on PATH; without it, one line and status 1. Tachyon writes
-// its image into a temporary folder, removed at the end.
+// its image into a temporary folder, removed at the end. POSIX only (Linux, macOS):
+// not built for Windows.
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +26,8 @@
 
 #include "external_program.hpp"
 #include "gi/core/parallel.hpp"
+#include "gi/core/platform/program.hpp"
+#include "gi/core/platform/temporary_folder.hpp"
 #include "gi/core/timer.hpp"
 #include "gi/raytrace/render.hpp"
 #include "gi/report/lesson.hpp"
@@ -57,10 +62,9 @@ struct Tachyon {
 
 // One Tachyon render on `threads` threads: the Ray Tracing Time it prints, in ms.
 double tachyon_ms(Tachyon& tachyon, int threads) {
-  const gi::ProgramRun run = gi::run_program(
-      tachyon.program,
-      {tachyon.scene, "-res", std::to_string(tachyon.width), std::to_string(tachyon.height), "-numthreads",
-       std::to_string(threads), "-format", "PPM", "-o", tachyon.image.string()},
+  const gi::platform::ProgramRun run = gi::platform::run_program(
+      {tachyon.program.string(), tachyon.scene, "-res", std::to_string(tachyon.width), std::to_string(tachyon.height),
+       "-numthreads", std::to_string(threads), "-format", "PPM", "-o", tachyon.image.string()},
       tachyon.time_limit);
   if (run.status != 0)
     throw std::runtime_error(tachyon.program.string() +
@@ -110,11 +114,14 @@ int main(int argc, char** argv) {
   Tachyon tachyon;
   int runs = 5, threads = 2;
   std::string accel = "brute-force";  // lesson 02's default (docs/02_recursive.md, "Speed")
+  bool plain_queries = false;
   lesson.add_image_size(tachyon.width, tachyon.height);  // both programs: Tachyon takes it as -res
   lesson.options()
       .add("--runs", runs, "renders of each program at each thread count, taking turns", 5, 1000)
       .add("--threads", threads, "the thread count set against one, for both programs", 2, 256)
       .add("--accel", accel, "how our rays find what they hit (lesson 05)", gi::acceleration_names())
+      .add_flag("--plain-queries", plain_queries,
+                "our ray queries and local shading by the textbook's code, not the *_fast files' (the same picture)")
       .add("--time-limit", tachyon.time_limit, "seconds a Tachyon run may take before it is stopped", 1, 3600);
   lesson.add_check([&] {
     const std::optional<fs::path> found = gi::find_on_path("tachyon");
@@ -125,23 +132,22 @@ int main(int argc, char** argv) {
   });
   return lesson.run(argc, argv, [&] {
     const std::string load_at_start = load_average();
-    const gi::TemporaryFolder folder("gi_tachyon_bench_");
+    const gi::platform::TemporaryFolder folder("gi_tachyon_bench_");
     tachyon.image = folder.path() / "s10.ppm";
     const gi::World world = gi::make_world(gi::make_scene("s10"), gi::acceleration_from_name(accel));
     gi::RenderSettings settings;
     settings.width = tachyon.width;
     settings.height = tachyon.height;
     settings.trace.max_depth = 8;  // RAYDEPTH 8 in the Tachyon file
+    settings.trace.fast_queries = !plain_queries;
 
     // Round after round, each program at each thread count once.
     Times ours_one, tachyon_one, ours_many, tachyon_many;
     gi::Progress progress("rendering", 4LL * runs);
     for (int run = 0; run < runs; ++run) {
-      settings.threads = 1;
-      ours_one.ms.push_back(1e3 * gi::render(world, settings).seconds);
+      ours_one.ms.push_back(1e3 * gi::render(world, settings, 1, 1).seconds);
       tachyon_one.ms.push_back(tachyon_ms(tachyon, 1));
-      settings.threads = threads;
-      ours_many.ms.push_back(1e3 * gi::render(world, settings).seconds);
+      ours_many.ms.push_back(1e3 * gi::render(world, settings, 1, threads).seconds);
       tachyon_many.ms.push_back(tachyon_ms(tachyon, threads));
       progress.advance(4);
     }
@@ -171,7 +177,9 @@ int main(int argc, char** argv) {
     std::cout << '\n';
     lesson.say("ours/Tachyon: our median over Tachyon's (below 1, ours is faster); speed-up: the median on one "
                "thread over the median on " + many + ".");
-    lesson.say("ours: gi-workbench's Whitted tracer (lesson 02), --accel " + accel + ", " + build() + ".");
+    lesson.say("ours: gi-workbench's Whitted tracer (lesson 02), --accel " + accel + ", ray queries and local shading by " +
+               (plain_queries ? "world.cpp and whitted.cpp" : "world_fast.cpp and whitted_fast.cpp") + ", " + build() +
+               ".");
     const std::string package = gi::debian_package_of(tachyon.program);
     lesson.say("Tachyon: " +
                (tachyon.version.empty() ? "it prints no version" : "\"Version " + tachyon.version + "\" as it prints it") +

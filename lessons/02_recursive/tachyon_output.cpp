@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <string_view>
 #include <vector>
+
+#include "gi/core/decimal.hpp"
 
 namespace gi {
 
@@ -47,7 +48,7 @@ std::string reason(const std::vector<std::string_view>& lines) {
 // "0.0971 seconds" -> 0.0971; anything else (no number, no unit, more text) throws.
 double seconds_of(std::string_view value, std::string_view line) {
   double seconds = 0;
-  const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), seconds);
+  const auto [end, error] = read_decimal(value.data(), value.data() + value.size(), seconds);
   const std::string_view unit = trim(value.substr(static_cast<std::size_t>(end - value.data())));
   if (error != std::errc() || unit != "seconds" || !std::isfinite(seconds) || seconds < 0)
     throw TachyonOutputError("tachyon's output: cannot read a time of seconds, not negative, from \"" +

@@ -42,15 +42,15 @@ gi::View view(const gi::World& world, const gi::RenderSettings& settings) {
 // output folder (reference.hpp says when it is trusted).
 gi::Image reference_image(const gi::World& world, gi::RenderSettings settings, int n, gi::Lesson& lesson) {
   settings.sampling = {gi::Sampler::Jittered, n};
-  settings.seed += 1000;  // independent of the jittered runs being measured
+  const std::uint64_t seed = lesson.seed() + 1000;  // independent of the jittered runs being measured
   const std::string scene_key = "scene " + world.scene.name + ", fingerprint " + gi::fingerprint(world.scene);
-  gi::CachedImage cached = gi::cached_reference(world, settings, scene_key, lesson.out());
-  if (cached.from_cache) lesson.say("reference: read from the cache " + cached.file.string() + "\n");
-  else if (cached.reason != "no cached image") lesson.say("reference: rendered again, " + cached.reason + "\n");
-  lesson.record(cached.file, gi::OutputKind::Cache, "the cached reference image, linear");
-  lesson.picture(cached.image, "reference", "the reference: jittered " + std::to_string(n) + "x" + std::to_string(n),
-                 view(world, settings));
-  return std::move(cached.image);
+  gi::CachedTruth cached = gi::cached_reference(world, settings, seed, lesson.threads(), scene_key, lesson.out());
+  if (cached.from_cache) lesson.say("reference: read from the cache " + cached.stem.string() + ".*\n");
+  else if (cached.reason != "none kept") lesson.say("reference: rendered again, " + cached.reason + "\n");
+  for (const auto& file : gi::truth_files(cached.stem)) lesson.record(file, gi::OutputKind::Cache, "the cached reference");
+  lesson.picture(cached.truth.mean, "reference",
+                 "the reference: jittered " + std::to_string(n) + "x" + std::to_string(n), view(world, settings));
+  return std::move(cached.truth.mean);
 }
 
 std::string slug(std::string label) {
@@ -79,8 +79,6 @@ int main(int argc, char** argv) {
       .add("--depth", settings.trace.max_depth, "recursion depth limit", 0, 30)
       .add("--reference-n", reference_n, "reference: jittered n x n samples per pixel", 4, 64);
   return lesson.run(argc, argv, [&] {
-    settings.threads = lesson.threads();
-    settings.seed = lesson.seed();
     const gi::World world = gi::make_world(scene, gi::acceleration_from_name(accel));
     const gi::Image reference = reference_image(world, settings, reference_n, lesson);
 
@@ -101,7 +99,7 @@ int main(int argc, char** argv) {
     gi::Progress progress("rendering", static_cast<long long>(list.size()));
     for (const Method& m : list) {
       settings.sampling = m.sampling;
-      const gi::RenderResult r = gi::render(world, settings);
+      const gi::RenderResult r = gi::render(world, settings, lesson.seed(), lesson.threads());
       progress.advance();
       const double spp = r.counts.of(gi::RayKind::Primary) / double(r.image.pixels.size());
       table.add_row({m.label, spp, r.counts.of(gi::RayKind::Primary), 1e3 * r.seconds, gi::rmse(r.image, reference),

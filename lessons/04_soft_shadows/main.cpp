@@ -59,7 +59,7 @@ gi::Table penumbra_study(gi::RenderSettings settings, const std::string& accel, 
     const double predicted = s * gi::soft_shadow_box_height / (gi::soft_shadow_light_height - gi::soft_shadow_box_height);
     settings.trace.soft_shadows = {gi::LightSampling::Jittered, 8};
     penumbra.add_row({s, predicted, measured_penumbra(lit, rng), s == 0 ? 1 : 64});
-    strip.push_back(gi::render(lit, settings).image);
+    strip.push_back(gi::render(lit, settings, lesson.seed(), lesson.threads()).image);
     const std::string size = gi::format_number(s, 2, gi::Format::Fixed);
     lesson.picture(strip.back(), "light_size_" + size, "light of side " + size, view(lit, settings));
   }
@@ -93,8 +93,6 @@ int main(int argc, char** argv) {
       .add("--light-size", light_size, "side of the square area light of the scene soft (scene units)", 0.05, 4.0)
       .add("--reference-n", reference_n, "reference: jittered n x n shadow rays per hit", 4, 64);
   return lesson.run(argc, argv, [&] {
-    settings.threads = lesson.threads();
-    settings.seed = lesson.seed();
     gi::Rng rng(lesson.seed(), 7);
     const auto view = [&](const gi::World& world, const gi::RenderSettings& s) {
       return gi::View{world.scene.camera, s.width, s.height,
@@ -112,13 +110,14 @@ int main(int argc, char** argv) {
     const gi::World world = gi::make_world(scene, gi::acceleration_from_name(accel));
     gi::RenderSettings reference_settings = settings;
     reference_settings.trace.soft_shadows = {gi::LightSampling::Jittered, reference_n};
-    reference_settings.seed += 1000;  // independent of the runs being measured
+    const std::uint64_t reference_seed = lesson.seed() + 1000;  // independent of the runs being measured
     const std::string scene_key = "scene " + scene.name + ", fingerprint " + gi::fingerprint(scene);
-    const gi::CachedImage cached = gi::cached_reference(world, reference_settings, scene_key, lesson.out());
-    if (cached.from_cache) lesson.say("reference: read from the cache " + cached.file.string() + "\n");
-    else if (cached.reason != "no cached image") lesson.say("reference: rendered again, " + cached.reason + "\n");
-    lesson.record(cached.file, gi::OutputKind::Cache, "the cached reference image, linear");
-    const gi::Image& reference = cached.image;
+    const gi::CachedTruth cached =
+        gi::cached_reference(world, reference_settings, reference_seed, lesson.threads(), scene_key, lesson.out());
+    if (cached.from_cache) lesson.say("reference: read from the cache " + cached.stem.string() + ".*\n");
+    else if (cached.reason != "none kept") lesson.say("reference: rendered again, " + cached.reason + "\n");
+    for (const auto& file : gi::truth_files(cached.stem)) lesson.record(file, gi::OutputKind::Cache, "the cached reference");
+    const gi::Image& reference = cached.truth.mean;
     lesson.picture(reference, "reference", "the reference: jittered " + std::to_string(reference_n) + "x" +
                    std::to_string(reference_n) + " shadow rays", view(world, reference_settings));
 
@@ -141,7 +140,7 @@ int main(int argc, char** argv) {
     gi::Progress progress("rendering", static_cast<long long>(runs.size()));
     for (const gi::SoftShadowSettings& run : runs) {
       settings.trace.soft_shadows = run;
-      const gi::RenderResult r = gi::render(world, settings);
+      const gi::RenderResult r = gi::render(world, settings, lesson.seed(), lesson.threads());
       progress.advance();
       const std::string name = gi::light_sampling_name(run.sampling);
       const double error = gi::rmse(r.image, reference);

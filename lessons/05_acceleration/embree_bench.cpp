@@ -161,7 +161,9 @@ int main(int argc, char** argv) {
                        {"Embree Mrays/s", 2}, {"ours/Embree", 2}, {"agree %", 3}});
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    for (const auto& [label, rays] : {std::pair{"camera", &camera}, std::pair{"random", &random}}) {
+    for (const auto& kind : {std::pair{"camera", &camera}, std::pair{"random", &random}}) {
+      const auto label = kind.first;  // not a structured binding: Clang before 16 cannot capture one
+      const auto rays = kind.second;
       const std::size_t n = rays->size();
       std::vector<double> our_t(n), embree_t(n);  // +inf for a miss
       const Paired closest = alternate(

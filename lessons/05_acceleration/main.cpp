@@ -241,8 +241,7 @@ void threads_table(double scale, gi::Lesson& lesson) {
     std::vector<gi::Image> images(cores + 1);
     for (int round = 0; round < 5; ++round)
       for (int threads = 1; threads <= cores; ++threads) {
-        job.settings.threads = threads;
-        gi::RenderResult result = gi::render(job.world, job.settings);
+        gi::RenderResult result = gi::render(job.world, job.settings, lesson.seed(), threads);
         times[threads].push_back(result.seconds);
         images[threads] = std::move(result.image);
       }

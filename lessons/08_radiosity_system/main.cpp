@@ -79,8 +79,6 @@ int main(int argc, char** argv) {
                             " with --bounces " + std::to_string(bounces));
   });
   return lesson.run(argc, argv, [&] {
-    display.threads = lesson.threads();
-    display.seed = lesson.seed();
     display.white = 1 / exposure;  // anti-aliased edges on the light (display.hpp)
 
     const gi::Mesh mesh = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, elements, 1), 1});
@@ -116,13 +114,15 @@ int main(int argc, char** argv) {
       const std::string label = k == 0 ? "emission" : k == 1 ? "direct light" : std::to_string(k - 1) + " bounce" + (k > 2 ? "s" : "");
       const double p = mean(gi::power(system.area, term));
       table.add_row({k, label, p, 100 * p / total, 100 * (1 - mean(gi::power(system.area, partial)) / total)});
-      const gi::RadiosityPicture picture = gi::render_radiosity_picture(receivers, mesh, partial, scene.camera, display);
+      const gi::RadiosityPicture picture = gi::render_radiosity_picture(receivers, mesh, partial, scene.camera, display,
+                                                                        lesson.seed(), lesson.threads());
       strip.push_back(picture.shown);
       lesson.picture(picture.radiance, "neumann_" + std::to_string(k), "the Neumann series up to " + label, view,
                      exposure, &picture.shown);
       term = bounce(system, term);
     }
-    const gi::RadiosityPicture solution = gi::render_radiosity_picture(receivers, mesh, direct.B, scene.camera, display);
+    const gi::RadiosityPicture solution =
+        gi::render_radiosity_picture(receivers, mesh, direct.B, scene.camera, display, lesson.seed(), lesson.threads());
     strip.push_back(solution.shown);
     lesson.picture(solution.radiance, "solution", "the direct solution, smooth shading", view, exposure, &solution.shown);
     lesson.diagram(gi::side_by_side(strip), "neumann_series", "emission, direct light, the bounces and the solution",
@@ -130,7 +130,8 @@ int main(int argc, char** argv) {
     lesson.table(table, "neumann");
 
     display.shading = gi::Shading::Flat;
-    const gi::RadiosityPicture flat = gi::render_radiosity_picture(receivers, mesh, direct.B, scene.camera, display);
+    const gi::RadiosityPicture flat =
+        gi::render_radiosity_picture(receivers, mesh, direct.B, scene.camera, display, lesson.seed(), lesson.threads());
     lesson.picture(flat.radiance, "solution_flat", "the direct solution, flat shading", view, exposure, &flat.shown);
     lesson.file(gi::file_stem(scene.name) + ".ply", gi::OutputKind::Mesh, "the mesh with vertex colours sRGB(exposure B / pi)",
                 [&](const std::filesystem::path& file) {

@@ -109,7 +109,8 @@ void watch_the_shots(const Box& box, const gi::ShooterRow& row, const gi::Shoote
   gi::Series unshot_curve{"unshot energy", {}, {}}, error_curve{"error", {}, {}}, ambient_curve{"error with ambient", {}, {}};
   const gi::View view{box.scene.camera, display.width, display.height, gi::describe_pixel_samples(display)};
   const auto draw = [&](const std::vector<gi::Color>& B, const std::string& stem, const std::string& caption) {
-    const gi::RadiosityPicture picture = gi::render_radiosity_picture(box.receivers, box.mesh, B, box.scene.camera, display);
+    const gi::RadiosityPicture picture = gi::render_radiosity_picture(box.receivers, box.mesh, B, box.scene.camera, display,
+                                                                      lesson.seed(), lesson.threads());
     lesson.picture(picture.radiance, stem, caption, view, exposure, &picture.shown);
     return picture.shown;
   };
@@ -188,8 +189,6 @@ int main(int argc, char** argv) {
       .add("--exposure", exposure, "multiplies the radiance before display", 0.01, 100.0);
   lesson.add_check([&] { check_kept_rows(scene, patches, elements_per_side); });
   return lesson.run(argc, argv, [&] {
-    display.threads = lesson.threads();
-    display.seed = lesson.seed();
     display.white = 1 / exposure;  // anti-aliased edges on the light (display.hpp)
     const Box box(scene, gi::patch_size_for(scene.surfaces, patches * elements_per_side * elements_per_side, elements_per_side),
                   elements_per_side);

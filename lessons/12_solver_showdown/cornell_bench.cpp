@@ -12,10 +12,8 @@
 #include <string>
 
 #include "gi/core/timer.hpp"
-#include "gi/pathtrace/path_scene.hpp"
-#include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/pathtrace/path_truth.hpp"
+#include "gi/radiosity/display/surface_mask.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/recipe_picture.hpp"
@@ -47,28 +45,22 @@ int main(int argc, char** argv) {
   return lesson.run(argc, argv, [&] {
     const gi::RadiosityScene scene = gi::cornell_box();
     const int size = 256;
-    std::string why;
-    const auto truth = gi::load_reference(
-        std::string(GI_SOURCE_DIR) + "/lessons/references/cornell_256x256",
-        gi::reference_fingerprint(gi::make_path_scene(gi::make_path_scene_by_name("cornell")), {}, size, size), &why);
-    if (!truth) throw std::runtime_error("no path-traced truth to score against: " + why);
-    const gi::BlockMask mask = gi::interior_blocks(scene.surfaces, scene.camera, size, size, 8);
+    gi::Truth truth = gi::stored_truth(std::string(GI_SOURCE_DIR) + "/lessons/references", "cornell", size, size);
+    truth.mask = gi::interior_blocks(scene.surfaces, scene.camera, size, size, 8);
 
     const gi::Timer timer;
     if (ff == "monte-carlo") recipe.form_factors.method = gi::FormFactorMethod::MonteCarlo;
     if (solver == "hierarchical") recipe.solver = gi::RecipeSolver::Hierarchical;
     recipe.exact_direct = direct != "form-factors";
-    recipe.threads = recipe.direct.threads = lesson.threads();
-    const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, recipe);
+    const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, recipe, lesson.threads());
     if (r.status != gi::SolveStatus::Converged) throw std::runtime_error("the solver did not converge");
     gi::DisplaySettings display;
     display.width = display.height = size;
-    display.threads = lesson.threads();
-    display.seed = lesson.seed();
-    const gi::Image picture = gi::recipe_picture(r, scene.camera, display, direct == "per-pixel", recipe.direct);
+    const gi::Image picture = gi::recipe_picture(r, scene.camera, display, direct == "per-pixel", recipe.direct,
+                                                lesson.seed(), lesson.threads());
     const double seconds = timer.seconds();
 
-    const gi::PictureError error = gi::picture_error(picture, truth->mean, mask);
+    const gi::PictureError error = gi::score(picture, truth).error;
     const std::string setting =
         recipe.solver == gi::RecipeSolver::Hierarchical
             ? "BF_eps " + gi::format_number(recipe.hierarchical.refinement.threshold, 0, gi::Format::Scientific) +

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,12 +16,13 @@
 #include "gi/core/timer.hpp"
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/display/direct_display.hpp"
+#include "gi/pathtrace/path_truth.hpp"
+#include "gi/radiosity/recipe_picture.hpp"
 #include "gi/radiosity/display/display.hpp"
 #include "gi/radiosity/system/float_sweep.hpp"
 #include "gi/radiosity/system/progressive.hpp"
-#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/radiosity/display/surface_mask.hpp"
+#include "gi/radiosity/system/shooting_furnace.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/system/solvers.hpp"
@@ -245,23 +247,13 @@ std::vector<Method> methods(Study study) {
   return list;
 }
 
-void against_truth(Study study, int threads, std::uint64_t seed, gi::Lesson& lesson) {
+void against_truth(Study study, const gi::Truth* truth, int threads, std::uint64_t seed, gi::Lesson& lesson) {
   const gi::RadiosityScene scene = gi::cornell_box();
   const int size = 256;
-  const gi::PathScene path_scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
-  std::string why;
-  const auto truth = gi::load_reference(std::string(GI_SOURCE_DIR) + "/lessons/references/cornell_256x256",
-                                        gi::reference_fingerprint(path_scene, {}, size, size), &why);
-  if (!truth) {
-    lesson.say("no path-traced picture of the box to compare with (" + why + "); make it with 14_make_reference");
-    return;
-  }
   const gi::BlockMask mask = gi::interior_blocks(scene.surfaces, scene.camera, size, size, 8);
   const gi::PictureError noise = gi::reference_noise(truth->standard_error, truth->mean, mask);
   gi::DisplaySettings display;
   display.width = display.height = size;
-  display.threads = threads;
-  display.seed = seed;
   const gi::View view{scene.camera, size, size, gi::describe_pixel_samples(display)};
   gi::Table table("The Cornell box against the path-traced truth (" + std::to_string(truth->spp) + " spp, whose own " +
                       "noise is " + gi::format_number(100 * noise.relative_rms, 2, gi::Format::Fixed) + "% / " +
@@ -276,22 +268,14 @@ void against_truth(Study study, int threads, std::uint64_t seed, gi::Lesson& les
   std::vector<std::string> warnings;
   for (Method m : methods(study)) {
     m.recipe.elements = m.elements;
-    m.recipe.threads = m.recipe.direct.threads = threads;
-    const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, m.recipe);
-    const gi::FormFactorScene elements(gi::element_shapes(r.mesh));
+    const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, m.recipe, threads);
     double seconds = r.seconds(), direct_seconds = r.direct_seconds;
-    gi::Image picture;
-    if (m.direct_per_pixel) {
-      // Part of the answer, not just of showing it: the direct light's time counts.
-      const gi::Timer timer;
-      picture = gi::render_direct_light(elements, r.mesh, scene.camera, display, m.recipe.direct);
-      seconds += timer.seconds(), direct_seconds += timer.seconds();
-      const std::vector<gi::Color> indirect = gi::indirect_part(r.mesh, r.B, r.direct);
-      const gi::Image rest = gi::render_radiosity_picture(elements, r.mesh, indirect, scene.camera, display).radiance;
-      for (std::size_t i = 0; i < picture.pixels.size(); ++i) picture.pixels[i] += rest.pixels[i];
-    } else {
-      picture = gi::render_radiosity_picture(elements, r.mesh, r.B, scene.camera, display).radiance;
-    }
+    // Per pixel, the direct light is part of the answer, not just of showing it: the
+    // picture's time counts.
+    const gi::Timer timer;
+    const gi::Image picture = gi::recipe_picture(r, scene.camera, display, m.direct_per_pixel, m.recipe.direct, seed,
+                                                 threads);
+    if (m.direct_per_pixel) seconds += timer.seconds(), direct_seconds += timer.seconds();
     const gi::PictureError error = gi::picture_error(picture, truth->mean, mask);
     const gi::FormFactorMethod ff = r.form_factors.method;
     const gi::Cell setting = ff == gi::FormFactorMethod::Hemicube     ? gi::Cell(r.form_factors.hemicube_resolution)
@@ -361,10 +345,13 @@ int main(int argc, char** argv) {
       .add_flag("--quick-mesh-study", quick_truth, "compare only the meshes of up to 500 elements with the truth")
       .add_flag("--full", full_truth, "compare every mesh of docs/12's table with the truth, up to 9 000 elements "
                                       "(under a minute; the default shows seven of its rows)");
+  std::optional<gi::Truth> truth;
   lesson.add_check([&] {
     if (int(skip_mesh) + int(quick_truth) + int(full_truth) > 1)
       throw gi::OptionError("--skip-mesh-study, --quick-mesh-study and --full choose how much to compare with the "
                             "truth: give at most one");
+    // Before any work: a damaged or stale truth stops the lesson in one line.
+    if (!skip_mesh) truth = gi::stored_truth(std::string(GI_SOURCE_DIR) + "/lessons/references", "cornell", 256, 256);
   });
   return lesson.run(argc, argv, [&] {
     const Box open = cornell(elements, false, lesson.threads()), closed = cornell(elements, true, lesson.threads());
@@ -372,10 +359,13 @@ int main(int argc, char** argv) {
     std::cout << '\n';
     stability(closed, open, meshed(gi::closed_box(1.0), 150, lesson.threads()), lesson.threads(), lesson);
     std::cout << '\n';
+    lesson.table(gi::shooting_furnace_table(gi::shooting_furnace(150, lesson.threads())), "shooting_furnace");
+    std::cout << '\n';
     precision(closed, lesson);
     if (!skip_mesh) {
       std::cout << '\n';
-      against_truth(full_truth ? Study::Full : quick_truth ? Study::Small : Study::Lesson, lesson.threads(), lesson.seed(), lesson);
+      against_truth(full_truth ? Study::Full : quick_truth ? Study::Small : Study::Lesson, &*truth, lesson.threads(),
+                    lesson.seed(), lesson);
     }
     std::cout << '\n';
     bandwidth(bandwidth_n, lesson);

@@ -13,11 +13,11 @@
 #include "gi/image/diff.hpp"
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
+#include "gi/pathtrace/path_truth.hpp"
 #include "gi/radiosity/display/direct_display.hpp"
 #include "gi/radiosity/hierarchical/hierarchical_run.hpp"
 #include "gi/radiosity/hierarchical/link_gather.hpp"
-#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/radiosity/display/surface_mask.hpp"
 #include "gi/radiosity/recipe.hpp"
 #include "gi/radiosity/display/vertex_colours.hpp"
 #include "gi/viewer/hierarchical.hpp"
@@ -34,14 +34,14 @@ struct Setup {
   gi::HierarchicalSettings settings;  // exact direct light on: the lesson's default method
   gi::DisplaySettings display;
   gi::DirectLightSettings per_pixel;  // the direct light drawn per pixel (lesson 12's split)
-  // That picture depends on the surfaces, not on how they are meshed: drawn once, on the
-  // surfaces themselves, and its time counted in every row that shows it.
-  gi::Image direct;
-  double direct_seconds = 0;
+  // That light depends on the surfaces, not on how they are meshed: cast on the
+  // surfaces themselves, its time counted in every picture that shows it.
+  const gi::DirectRadiance* direct = nullptr;
   gi::Image truth;
   gi::BlockMask mask;
   double exposure = 1.5;
-  int threads = 2;
+  int threads = 0;
+  std::uint64_t seed = 1;  // the display's films
   int uniform_elements = 1000;  // the finest uniform mesh of the comparison; also a quarter of it
 };
 
@@ -66,18 +66,17 @@ Scored score(const Setup& s, const gi::HierarchicalRun& run, Shown shown) {
   const std::vector<gi::Color> B = gi::shown_radiosity(run);
   if (shown == Shown::Leaves) {
     out.picture = gi::render_radiosity_picture(elements, leaves.mesh, B, gi::leaf_vertex_radiosity(leaves, B),
-                                               s.scene.camera, s.display)
+                                               s.scene.camera, s.display, s.seed, s.threads)
                       .radiance;
   } else {
-    out.picture = s.direct;
     const std::vector<gi::Color> rest = gi::indirect_part(leaves.mesh, B, run.result.direct);
     const std::vector<gi::Color> at_vertices = shown == Shown::Gathered
                                                    ? gi::gathered_at_vertices(run.hierarchy, leaves, s.threads)
                                                    : gi::leaf_vertex_radiosity(leaves, rest);
-    const gi::Image indirect =
-        gi::render_radiosity_picture(elements, leaves.mesh, rest, at_vertices, s.scene.camera, s.display).radiance;
-    for (std::size_t i = 0; i < out.picture.pixels.size(); ++i) out.picture.pixels[i] += indirect.pixels[i];
-    out.seconds = s.direct_seconds + timer.seconds();
+    const gi::MeshRadiance bounced{elements, leaves.mesh, rest, at_vertices, gi::Shading::Smooth};
+    out.picture = gi::render_display(gi::sum_of(*s.direct, bounced), s.scene.camera, s.display, s.seed, s.threads)
+                      .radiance;
+    out.seconds = timer.seconds();
   }
   out.error = gi::picture_error(out.picture, s.truth, s.mask).relative_rms;
   return out;
@@ -121,7 +120,7 @@ void thresholds(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
         square.x.push_back(leaves), square.y.push_back(leaves * (leaves - 1));
         gi::DisplaySettings large = s.display;  // room for the leaves' outlines
         large.width = large.height = 384;
-        shown.push_back(gi::render_leaves(run, s.scene.camera, large).with_mesh);
+        shown.push_back(gi::render_leaves(run, s.scene.camera, large, s.seed, s.threads).with_mesh);
         continue;
       }
       row("exact direct", score(s, run, Shown::Leaves), exact);
@@ -164,6 +163,7 @@ void thresholds(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
                         static_cast<long long>(r.replaced), r.iterations, 1e3 * r.refine_seconds, 1e3 * r.solve_seconds,
                         r.change});
       lesson.table(rounds, "rounds");
+      lesson.say(gi::describe(run.result.balanced));
     }
   }
   lesson.table(table, "thresholds");
@@ -186,17 +186,16 @@ void uniform_meshes(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
     gi::Recipe recipe;
     recipe.elements = elements;
     recipe.form_factors.hemicube_resolution = 0;  // from the mesh
-    recipe.threads = recipe.direct.threads = s.threads;
-    const gi::RecipeResult r = gi::solve_recipe(s.scene.surfaces, recipe);
+    const gi::RecipeResult r = gi::solve_recipe(s.scene.surfaces, recipe, s.threads);
     const gi::FormFactorScene shapes(gi::element_shapes(r.mesh));
-    const gi::Image mesh_picture = gi::render_radiosity_picture(shapes, r.mesh, r.B, s.scene.camera, s.display).radiance;
+    const gi::Image mesh_picture =
+        gi::render_radiosity_picture(shapes, r.mesh, r.B, s.scene.camera, s.display, s.seed, s.threads).radiance;
     const gi::Timer timer;
-    gi::Image picture = s.direct;
-    const gi::Image rest = gi::render_radiosity_picture(shapes, r.mesh, gi::indirect_part(r.mesh, r.B, r.direct),
-                                                        s.scene.camera, s.display)
-                               .radiance;
-    for (std::size_t i = 0; i < picture.pixels.size(); ++i) picture.pixels[i] += rest.pixels[i];
-    const double per_pixel = s.direct_seconds + timer.seconds();
+    const std::vector<gi::Color> rest = gi::indirect_part(r.mesh, r.B, r.direct), at_vertices = gi::vertex_radiosity(r.mesh, rest);
+    const gi::MeshRadiance bounced{shapes, r.mesh, rest, at_vertices, gi::Shading::Smooth};
+    const gi::Image picture =
+        gi::render_display(gi::sum_of(*s.direct, bounced), s.scene.camera, s.display, s.seed, s.threads).radiance;
+    const double per_pixel = timer.seconds();
     const int n = static_cast<int>(r.mesh.elements.size());
     const double e_mesh = gi::picture_error(mesh_picture, s.truth, s.mask).relative_rms;
     const double e_pixel = gi::picture_error(picture, s.truth, s.mask).relative_rms;
@@ -225,7 +224,7 @@ void stability(const Setup& s, gi::Lesson& lesson) {
     const gi::HierarchicalRun run = gi::run_hierarchical(s.scene, settings, s.threads);
     table.add_row({what, run.result.rounds.back().leaves, static_cast<long long>(gi::link_count(run.hierarchy)),
                    run.seconds, 100 * score(s, run, Shown::Leaves).error});
-    shown.push_back(gi::render_leaves(run, s.scene.camera, s.display).with_mesh);
+    shown.push_back(gi::render_leaves(run, s.scene.camera, s.display, s.seed, s.threads).with_mesh);
   }
   lesson.table(table, "stability");
   lesson.diagram(gi::side_by_side(shown), "stability", "the cases of the stability table, leaves drawn", 1);
@@ -245,7 +244,7 @@ void what_can_change(const Setup& s, gi::Lesson& lesson) {
   const double resolve = resolve_timer.seconds();
   gi::DisplaySettings shown = s.display;
   shown.white = 1 / s.exposure;
-  const gi::Image relit_shown = gi::render_leaves(run, s.scene.camera, shown).picture.shown;
+  const gi::Image relit_shown = gi::render_leaves(run, s.scene.camera, shown, s.seed, s.threads).picture.shown;
   gi::RadiosityScene warm_scene = s.scene;
   for (std::size_t k = 0; k < warm.size(); ++k) warm_scene.surfaces[k].emission = warm[k];
   const gi::HierarchicalRun fresh = gi::run_hierarchical(warm_scene, settings, s.threads);
@@ -262,12 +261,12 @@ void what_can_change(const Setup& s, gi::Lesson& lesson) {
   gi::Camera moved = s.scene.camera;
   moved.eye.x -= 150;
   const gi::Timer render_timer;
-  const gi::LeafPicture view = gi::render_leaves(fresh, moved, s.display);
+  const gi::LeafPicture view = gi::render_leaves(fresh, moved, s.display, s.seed, s.threads);
   const double render = render_timer.seconds();
   // The same view from scratch: refine, solve and render again.
   const gi::Timer scratch_timer;
   const gi::LeafPicture from_scratch = gi::render_leaves(gi::run_hierarchical(warm_scene, settings, s.threads), moved,
-                                                         s.display);
+                                                         s.display, s.seed, s.threads);
   const double scratch = scratch_timer.seconds();
   const bool identical = from_scratch.picture.radiance.pixels == view.picture.radiance.pixels;
   gi::Table table("What can change without new links (a warm light, 0.5 0.3 0.1 of the old; no truth of it exists)",
@@ -283,7 +282,7 @@ void what_can_change(const Setup& s, gi::Lesson& lesson) {
   lesson.say(std::string("the new camera's picture from the kept solution and from scratch: ") +
              (identical ? "identical, byte for byte" : "DIFFERENT"));
   lesson.diagram(gi::side_by_side({relit_shown,
-                                   gi::render_leaves(fresh, s.scene.camera, shown).picture.shown, view.picture.shown}),
+                                   gi::render_leaves(fresh, s.scene.camera, shown, s.seed, s.threads).picture.shown, view.picture.shown}),
                  "relight", "the warm light re-solved on the old links; fully recomputed; seen from elsewhere", 1);
 }
 
@@ -308,18 +307,15 @@ int main(int argc, char** argv) {
       .add("--uniform-elements", s.uniform_elements, "the finest uniform mesh compared (and a quarter of it)", 100, 20000)
       .add("--exposure", s.exposure, "multiplies the radiance before display", 0.01, 100.0)
       .add_flag("--skip-studies", skip_studies, "only the thresholds (no uniform meshes, failures or relighting)");
+  const int size = 256;  // the stored truth's
+  std::optional<gi::Truth> truth;
+  lesson.add_check([&] {  // before any work: a damaged or stale truth stops the lesson in one line
+    truth = gi::stored_truth(std::string(GI_SOURCE_DIR) + "/lessons/references", "cornell", size, size);
+  });
   return lesson.run(argc, argv, [&] {
-    s.threads = s.settings.direct.threads = s.per_pixel.threads = lesson.threads();
-    s.display.threads = lesson.threads();
-    s.display.seed = s.settings.refinement.seed = lesson.seed();
-    const int size = 256;  // the stored truth's
+    s.threads = lesson.threads();
+    s.seed = s.settings.refinement.seed = lesson.seed();
     s.display.width = s.display.height = size;
-    std::string why;
-    const auto truth = gi::load_reference(
-        std::string(GI_SOURCE_DIR) + "/lessons/references/cornell_256x256",
-        gi::reference_fingerprint(gi::make_path_scene(gi::make_path_scene_by_name("cornell")), {}, size, size), &why);
-    if (!truth) throw std::runtime_error("no path-traced picture of the box to compare with (" + why +
-                                         "); make it with 14_make_reference");
     s.truth = truth->mean;
     s.mask = gi::interior_blocks(s.scene.surfaces, s.scene.camera, size, size, 8);
     const gi::PictureError noise = gi::reference_noise(truth->standard_error, truth->mean, s.mask);
@@ -328,11 +324,11 @@ int main(int argc, char** argv) {
                " interior 8x8 blocks");
     gi::Chart chart{"Error against time: hierarchical and uniform meshes", "seconds", "error against the truth (%)",
                     true, true, {}};
-    const gi::Timer direct_timer;
     const gi::Mesh surfaces = gi::make_mesh(s.scene.surfaces, {1e300, 1});  // one element per surface
-    s.direct = gi::render_direct_light(gi::FormFactorScene(gi::element_shapes(surfaces)), surfaces, s.scene.camera,
-                                       s.display, s.per_pixel);
-    s.direct_seconds = direct_timer.seconds();
+    const gi::FormFactorScene surface_shapes(gi::element_shapes(surfaces));
+    const gi::DirectLighting lights(surfaces, s.per_pixel.light_cells);
+    const gi::DirectRadiance direct{surface_shapes, surfaces, lights};
+    s.direct = &direct;
     thresholds(s, chart, lesson);
     if (skip_studies) return;
     uniform_meshes(s, chart, lesson);

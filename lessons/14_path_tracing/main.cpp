@@ -16,7 +16,7 @@
 #include "gi/image/diff.hpp"
 #include "gi/image/metrics.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
+#include "gi/pathtrace/path_truth.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/progress.hpp"
@@ -74,46 +74,30 @@ void monte_carlo_warm_up(const Settings& s, gi::Lesson& lesson) {
   lesson.table(table, "monte_carlo");
 }
 
-// The stored Cornell box reference, averaged down to the lesson's size; read before any
-// work, and refused in one line if it is missing, damaged or made for another scene.
-gi::PathReference stored_reference(const gi::PathScene& scene, const Settings& s) {
-  std::string why;
-  const auto stored = gi::load_reference(s.reference, gi::reference_fingerprint(scene, s.path, 256, 256), &why);
-  if (!stored)
-    throw std::runtime_error("the Cornell box reference cannot be used: " + why +
-                             " (bin/14_make_reference makes it; see its opening comment)");
-  return gi::downsample(*stored, 256 / s.width);
-}
-
-// Any other scene or size: a reference rendered here once and kept in the output folder,
-// reused while the scene, the sample count and the path tracer's code are the same.
-gi::PathReference own_reference(const gi::PathScene& scene, const Settings& s, gi::Lesson& lesson) {
+// Any other scene or size: a reference rendered here once and kept in the output folder
+// (render/truth.hpp), reused while the scene, the sample count and the path tracer's
+// code are the same.
+gi::Truth own_reference(const gi::PathScene& scene, const Settings& s, gi::Lesson& lesson) {
   const std::string stem = "reference_" + s.scene + "_" + std::to_string(s.width) + "x" + std::to_string(s.height) +
                            "_depth" + std::to_string(s.path.max_depth);
-  const std::filesystem::path file = lesson.out() / stem;
-  const std::string fingerprint =
-      gi::reference_fingerprint(scene, s.path, s.width, s.height) + " code " + gi::path_code_fingerprint();
-  std::string why = "none kept";
-  auto cached = gi::load_reference(file, fingerprint, &why);
-  if (cached && cached->spp != s.reference_spp) cached.reset(), why = "the kept one has another sample count";
-  if (cached) {
-    lesson.say("reference: read from " + file.string() + ".*, kept by an earlier run");
-  } else {
+  gi::TruthKey key = gi::path_truth_key(scene, s.path, s.width, s.height, gi::path_code_fingerprint());
+  key.fingerprint += " spp " + std::to_string(s.reference_spp);
+  const std::uint64_t seed = s.seed + 1000000;  // streams no picture measured uses
+  const gi::CachedTruth cached = gi::cached_truth(lesson.out() / stem, key, seed, [&](const std::string& why) {
     lesson.say("rendering a reference: " + std::to_string(s.reference_spp) + " spp (" + why + ")");
-    gi::Film film = gi::make_film(s.width, s.height, s.seed + 1000000);  // streams no picture measured uses
+    gi::Film film = gi::make_film(s.width, s.height, seed);
     gi::Progress progress("reference", s.reference_spp);
-    const gi::Timer timer;
     for (int done = 0; done < s.reference_spp; done += 16) {
-      gi::render_pass(film, scene, s.path, std::min(16, s.reference_spp - done), s.threads);
+      gi::path_trace(film, scene, s.path, std::min(16, s.reference_spp - done), s.threads);
       progress.advance(std::min(16, s.reference_spp - done));
     }
     progress.finish();
-    cached = gi::reference_from_film(film, s.scene, fingerprint, s.seed + 1000000, s.path, timer.seconds());
-    gi::save_reference(*cached, file);
-  }
-  for (const char* suffix : {".txt", ".pfm", "_stderr.pfm"})
-    lesson.record(lesson.out() / (stem + suffix), gi::OutputKind::Cache, "the reference kept for later runs");
-  return *cached;
+    return film;
+  }, gi::path_truth_about(s.scene, s.path));
+  if (cached.from_cache) lesson.say("reference: read from " + cached.stem.string() + ".*, kept by an earlier run");
+  for (const auto& file : gi::truth_files(cached.stem))
+    lesson.record(file, gi::OutputKind::Cache, "the reference kept for later runs");
+  return cached.truth;
 }
 
 double grey(const gi::Pixel& p) { return (double(p.x) + p.y + p.z) / 3; }
@@ -131,7 +115,7 @@ struct Snapshot {
 };
 
 std::vector<Snapshot> converge(const gi::PathScene& scene, const Settings& s, gi::Strategy strategy,
-                               const gi::PathReference& reference, gi::Lesson* pictures) {
+                               const gi::Truth& reference, gi::Lesson* pictures) {
   gi::PathSettings path = s.path;
   path.strategy = strategy;
   gi::Film film = gi::make_film(s.width, s.height, s.seed);
@@ -141,7 +125,7 @@ std::vector<Snapshot> converge(const gi::PathScene& scene, const Settings& s, gi
   double seconds = 0;
   for (int spp = 1; spp <= s.max_spp; spp *= 2) {
     const gi::Timer timer;
-    gi::render_pass(film, scene, path, spp - static_cast<int>(film.samples), s.threads);
+    gi::path_trace(film, scene, path, spp - static_cast<int>(film.samples), s.threads);
     seconds += timer.seconds();
     progress.advance(spp / 2 + (spp == 1));
     const gi::Image picture = gi::film_mean(film);
@@ -178,7 +162,7 @@ std::vector<Snapshot> converge(const gi::PathScene& scene, const Settings& s, gi
 
 // The pictures' table: MIS from 1 spp on, its error against the reference and the
 // error its own variance predicts, sqrt(mean variance + the reference's).
-void picture_table(const std::vector<Snapshot>& mis, const gi::PathReference& reference, const Settings& s,
+void picture_table(const std::vector<Snapshot>& mis, const gi::Truth& reference, const Settings& s,
                    gi::Lesson& lesson) {
   gi::Table table("Path tracing (MIS), " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                       ": a convergence study against the reference (the same estimator, many more samples)",
@@ -218,10 +202,10 @@ void strategy_rows(gi::Table& table, const std::string& scene, const std::vector
 
 // The white furnace (a closed box, every wall rho = 0.5 emitting L_e = 1): its exact
 // picture is L_e (1 + rho + ... + rho^D) everywhere, an independent reference.
-gi::PathReference furnace_truth(const Settings& s) {
+gi::Truth furnace_truth(const Settings& s) {
   double L = 0;
   for (int k = 0; k <= s.path.max_depth; ++k) L += std::pow(0.5, k);
-  gi::PathReference exact;
+  gi::Truth exact;
   exact.mean = gi::Image(s.width, s.height, gi::Pixel(float(L)));
   exact.standard_error = gi::Image(s.width, s.height);
   return exact;
@@ -244,10 +228,10 @@ int main(int argc, char** argv) {
       .add("--reference-spp", s.reference_spp, "samples per pixel of a reference this lesson renders itself", 16,
            1 << 20);
   std::optional<gi::PathScene> scene;
-  std::optional<gi::PathReference> reference;
-  lesson.add_check([&] {  // before any work: a missing or stale reference is said at once
+  std::optional<gi::Truth> reference;
+  lesson.add_check([&] {  // before any work: a missing, damaged or stale reference is said at once
     scene.emplace(gi::make_path_scene(gi::make_path_scene_by_name(s.scene)));
-    if (uses_stored_reference(s)) reference = stored_reference(*scene, s);
+    if (uses_stored_reference(s)) reference = gi::stored_truth_at(s.reference, "cornell", 256, s.width, s.height);
   });
   return lesson.run(argc, argv, [&] {
     s.threads = lesson.threads();
@@ -267,10 +251,11 @@ int main(int argc, char** argv) {
                gi::format_number(camera.vertical_fov, 4, gi::Format::Fixed) +
                " degrees; square pixels, each the mean over its area (a box filter)");
     if (!reference) reference = own_reference(*scene, s, lesson);
-    lesson.say("reference: " + reference->scene + ", " + std::to_string(reference->spp) + " spp (" +
-               gi::name(reference->settings.strategy) + ", seed " + std::to_string(reference->seed) + ") at " +
+    lesson.say("reference: " + reference->about_value("scene") + ", " + std::to_string(reference->spp) + " spp (" +
+               reference->about_value("strategy") + ", seed " + std::to_string(reference->seed) + ") at " +
                std::to_string(s.width) + "x" + std::to_string(s.height) + "; its own relative standard error " +
-               gi::format_number(100 * gi::relative_standard_error(*reference), 2, gi::Format::Fixed) +
+               gi::format_number(100 * gi::relative_standard_error(reference->standard_error, reference->mean), 2,
+                                 gi::Format::Fixed) +
                "% per pixel\n");
     std::vector<std::vector<Snapshot>> runs;
     for (const gi::Strategy strategy : {gi::Strategy::Bsdf, gi::Strategy::Lights, gi::Strategy::Mis})

@@ -15,8 +15,8 @@
 #include "gi/image/diff.hpp"
 #include "gi/pathtrace/convergence.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/pathtrace/path_truth.hpp"
+#include "gi/radiosity/display/surface_mask.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/recipe_picture.hpp"
 #include "gi/report/lesson.hpp"
@@ -48,7 +48,7 @@ struct Scoring {
   double noise = 0, pixel_noise = 0;
 };
 
-void score(Run& run, const gi::PathReference& truth, const Scoring& scoring) {
+void score(Run& run, const gi::Truth& truth, const Scoring& scoring) {
   run.error = gi::picture_error(run.picture, truth.mean, scoring.blocks).relative_rms;
   run.pixel_error = gi::picture_error(run.picture, truth.mean, scoring.pixels).relative_rms;
 }
@@ -96,23 +96,20 @@ std::vector<Method> radiosity_methods(bool full) {
   return list;
 }
 
-std::vector<Run> solve_radiosity(const gi::RadiosityScene& scene, const Settings& s, const gi::PathReference& truth,
+std::vector<Run> solve_radiosity(const gi::RadiosityScene& scene, const Settings& s, const gi::Truth& truth,
                                  const Scoring& scoring) {
   gi::DisplaySettings display;
   display.width = display.height = s.size;
-  display.threads = s.threads;
-  display.seed = s.seed;
   std::vector<Run> runs;
   for (Method m : radiosity_methods(s.full))
     for (int elements : m.elements) {
       m.recipe.elements = elements;
-      m.recipe.threads = m.recipe.direct.threads = s.threads;
       const gi::Timer timer;
-      const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, m.recipe);
+      const gi::RecipeResult r = gi::solve_recipe(scene.surfaces, m.recipe, s.threads);
       if (r.status != gi::SolveStatus::Converged)
         throw std::runtime_error(m.family + " at " + std::to_string(elements) + " elements did not converge");
       Run run{m.family, m.family, static_cast<int>(r.mesh.elements.size()), 0, 0, 0, {}};
-      run.picture = gi::recipe_picture(r, scene.camera, display, m.direct_per_pixel, m.recipe.direct);
+      run.picture = gi::recipe_picture(r, scene.camera, display, m.direct_per_pixel, m.recipe.direct, s.seed, s.threads);
       run.seconds = timer.seconds();
       score(run, truth, scoring);
       runs.push_back(std::move(run));
@@ -121,7 +118,7 @@ std::vector<Run> solve_radiosity(const gi::RadiosityScene& scene, const Settings
 }
 
 // Path tracing (MIS) at 1, 2, 4, ... spp, one film sampled further for each picture.
-std::vector<Run> path_trace(const gi::PathScene& scene, const Settings& s, const gi::PathReference& truth,
+std::vector<Run> path_trace(const gi::PathScene& scene, const Settings& s, const gi::Truth& truth,
                             const Scoring& scoring) {
   gi::Film film = gi::make_film(s.size, s.size, s.seed);
   gi::Progress progress("path tracing", s.max_spp);
@@ -129,7 +126,7 @@ std::vector<Run> path_trace(const gi::PathScene& scene, const Settings& s, const
   double seconds = 0;
   for (int spp = 1; spp <= s.max_spp; spp *= 2) {
     const gi::Timer timer;
-    gi::render_pass(film, scene, {}, spp - static_cast<int>(film.samples), s.threads);
+    gi::path_trace(film, scene, {}, spp - static_cast<int>(film.samples), s.threads);
     seconds += timer.seconds();
     progress.advance(spp / 2 + (spp == 1));
     Run run{"path tracing (MIS)", "path tracing (MIS), " + std::to_string(spp) + " spp", 0, seconds, 0, 0, {}};
@@ -143,7 +140,7 @@ std::vector<Run> path_trace(const gi::PathScene& scene, const Settings& s, const
 
 // 1. Every method, one table and one chart; and what path tracing needs to match each
 // radiosity picture, from its own error law e^2 = v / N + r^2 (convergence.hpp).
-void chart_and_table(const std::vector<Run>& radiosity, const std::vector<Run>& paths, const gi::PathReference& truth,
+void chart_and_table(const std::vector<Run>& radiosity, const std::vector<Run>& paths, const gi::Truth& truth,
                      const Scoring& scoring, const Settings& s, gi::Lesson& lesson) {
   std::vector<gi::ErrorAtSamples> by_block, by_pixel;
   for (const Run& run : paths) {
@@ -214,7 +211,7 @@ const Run& nearest_in_time(const std::vector<Run>& runs, double seconds) {
 // 2. Where each fails, on the box: the coarsest mesh (blocky, leaking, shadows smeared
 // over elements) and the best radiosity picture, against path tracing at the best's
 // time and the truth.
-void where_each_fails(const std::vector<Run>& radiosity, const std::vector<Run>& paths, const gi::PathReference& truth,
+void where_each_fails(const std::vector<Run>& radiosity, const std::vector<Run>& paths, const gi::Truth& truth,
                       const gi::View& view, gi::Lesson& lesson) {
   const Run& coarse = radiosity.front();
   const Run& best = *std::min_element(radiosity.begin(), radiosity.end(), [](const Run& a, const Run& b) {
@@ -252,7 +249,7 @@ void specular(const Settings& s, gi::Lesson& lesson) {
   const gi::Timer timer;
   for (int spp = s.caustic_spp / 16; spp <= s.caustic_spp; spp *= 4) {
     const int more = spp - static_cast<int>(film.samples);
-    gi::render_pass(film, scene, {}, more, s.threads);
+    gi::path_trace(film, scene, {}, more, s.threads);
     progress.advance(more);
     const gi::Image mean = gi::film_mean(film), variance = gi::film_variance(film);
     // Mean relative standard error over a square of pixels (fractions of the picture).
@@ -303,19 +300,14 @@ int main(int argc, char** argv) {
       .add("--reference", s.reference, "the Cornell box's converged picture (files STEM.txt, STEM.pfm, ...)");
   const gi::RadiosityScene box = gi::cornell_box();
   std::optional<gi::PathScene> scene;
-  std::optional<gi::PathReference> truth;
-  lesson.add_check([&] {  // before any work: a bad size, a missing or stale truth, are said at once
+  std::optional<gi::Truth> truth;
+  lesson.add_check([&] {  // before any work: a bad size, a missing, damaged or stale truth, are said at once
     if (256 % s.size != 0) throw gi::OptionError("--size must divide 256 (64, 128 or 256), got " + std::to_string(s.size));
     scene.emplace(gi::make_path_scene(gi::make_path_scene_by_name("cornell")));
-    std::string why;
-    const auto stored = gi::load_reference(s.reference, gi::reference_fingerprint(*scene, {}, 256, 256), &why);
-    if (!stored)
-      throw std::runtime_error("the Cornell box reference cannot be used: " + why +
-                               " (bin/14_make_reference makes it; see its opening comment)");
-    if (s.size == 256 && lesson.seed() >= stored->seed && lesson.seed() < stored->seed + stored->batches)
+    truth = gi::stored_truth_at(s.reference, "cornell", 256, s.size, s.size);
+    if (s.size == 256 && lesson.seed() >= truth->seed && lesson.seed() < truth->seed + truth->batches)
       throw gi::OptionError("--seed " + std::to_string(lesson.seed()) + " is one of the reference's own seeds: its "
                             "pictures would share samples with the truth");
-    truth = gi::downsample(*stored, 256 / s.size);
   });
   return lesson.run(argc, argv, [&] {
     s.threads = lesson.threads();

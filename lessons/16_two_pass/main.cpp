@@ -12,7 +12,7 @@
 #include "gi/core/timer.hpp"
 #include "gi/image/diff.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
+#include "gi/pathtrace/path_truth.hpp"
 #include "gi/radiosity/display/display.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"
@@ -24,6 +24,7 @@ namespace {
 
 struct Settings {
   std::string scene = "both";
+  std::string references = std::string(GI_SOURCE_DIR) + "/lessons/references";
   int width = 128, height = 128, threads = 0;
   std::uint64_t seed = 1;
   gi::RadiosityPassSettings radiosity;
@@ -36,20 +37,12 @@ gi::View view_of(const gi::TwoPassScene& scene, const Settings& s) {
 }
 
 // The converged path-traced picture kept in lessons/references/ (14_make_reference),
-// averaged down to the lesson's size; nothing (and the reason) if there is none.
-std::optional<gi::PathReference> stored_reference(const Settings& s, std::string& why) {
-  const int stored = s.scene == "cornell" ? 256 : 128;
-  if (s.width != s.height || stored % s.width != 0) {
-    why = "the stored reference is " + std::to_string(stored) + " x " + std::to_string(stored) +
-          ": a square size that divides it is scored";
-    return std::nullopt;
-  }
-  const gi::PathScene path_scene = gi::make_path_scene(gi::make_path_scene_by_name(s.scene));
-  const std::string stem = s.scene + "_" + std::to_string(stored) + "x" + std::to_string(stored);
-  auto truth = gi::load_reference(std::string(GI_SOURCE_DIR) + "/lessons/references/" + stem,
-                                  gi::reference_fingerprint(path_scene, {}, stored, stored), &why);
-  if (truth && stored != s.width) truth = gi::downsample(*truth, stored / s.width);
-  return truth;
+// averaged down to the lesson's size; nothing if there is none of that size (its side
+// is not a multiple of the picture's). Throws std::runtime_error if it is damaged.
+std::optional<gi::Truth> stored_truth(const Settings& s) {
+  const int side = gi::stored_truth_side(s.scene).value();
+  if (s.width != s.height || side % s.width != 0) return std::nullopt;
+  return gi::stored_truth(s.references, s.scene, s.width, s.height);
 }
 
 struct Picture {
@@ -63,11 +56,12 @@ struct Picture {
 Picture radiosity_alone(const Settings& s, const gi::TwoPassScene& scene, const gi::RadiosityPass& pass) {
   gi::DisplaySettings display;
   display.width = s.width, display.height = s.height, display.samples = s.eye.samples;
-  display.threads = s.threads, display.seed = s.seed;
   const gi::Timer timer;
   const gi::FormFactorScene elements(gi::element_shapes(pass.handoff.mesh));
   gi::Image radiosity =
-      gi::render_radiosity_picture(elements, pass.handoff.mesh, pass.handoff.B, scene.camera, display).radiance;
+      gi::render_radiosity_picture(elements, pass.handoff.mesh, pass.handoff.B, scene.camera, display, s.seed,
+                                   s.threads)
+          .radiance;
   return {"radiosity alone", std::move(radiosity), pass.seconds(), timer.seconds()};
 }
 
@@ -80,7 +74,7 @@ std::vector<Picture> render_all(const Settings& s, const gi::TwoPassScene& scene
     gi::TwoPassSettings eye = s.eye;
     eye.indirect = indirect;
     const gi::Timer timer;
-    gi::Image picture = gi::render_two_pass(scene, pass.handoff, eye);
+    gi::Image picture = gi::render_two_pass(scene, pass.handoff, eye, s.seed, s.threads);
     return Picture{"", std::move(picture), pass1, timer.seconds()};
   };
   pictures.push_back(eye_pass(gi::IndirectLight::Ambient, 0));
@@ -104,7 +98,7 @@ std::vector<Picture> render_all(const Settings& s, const gi::TwoPassScene& scene
 //    diffuse surfaces (picture_mask.hpp), and over the whole picture in 8 x 8 blocks
 //    (edges, the light and the spheres included).
 void score(const Settings& s, const gi::TwoPassScene& scene, const std::vector<Picture>& pictures,
-           const gi::PathReference& truth, const gi::BlockMask& mask, gi::Lesson& lesson) {
+           const gi::Truth& truth, const gi::BlockMask& mask, gi::Lesson& lesson) {
   const gi::PictureError noise = gi::reference_noise(truth.standard_error, truth.mean, mask);
   gi::Table table("The " + scene.name + " box against the path-traced truth (" + std::to_string(truth.spp) +
                       " spp; its own noise " + gi::format_number(100 * noise.relative_rms, 2, gi::Format::Fixed) +
@@ -135,7 +129,7 @@ void equal_time(const Settings& s, const gi::TwoPassScene& scene, const Picture&
   table.add_row({gather.method, elements, gather.pass1_seconds + gather.pass2_seconds, 100 * g.relative_rms});
   gi::RadiosityPassSettings finer = s.radiosity;
   finer.elements *= 2;
-  const gi::RadiosityPass pass = gi::radiosity_pass(scene, finer);
+  const gi::RadiosityPass pass = gi::radiosity_pass(scene, finer, s.threads);
   const Picture alone = radiosity_alone(s, scene, pass);
   table.add_row({alone.method, static_cast<int>(pass.handoff.mesh.elements.size()),
                  alone.pass1_seconds + alone.pass2_seconds,
@@ -151,12 +145,11 @@ struct CropPlace {
 };
 
 void crops(const Settings& s, const std::vector<Picture>& pictures, const gi::Image& truth, gi::Lesson& lesson) {
-  const std::vector<CropPlace> places =
-      s.scene == "cornell"
-          ? std::vector<CropPlace>{{"shadow", "the floor between the blocks: their shadows", 0.36, 0.70},
-                                   {"corner", "the ceiling by the green wall: the gather's noise", 0.70, 0.10}}
-          : std::vector<CropPlace>{{"caustic", "under the glass sphere: the caustic", 0.53, 0.64},
-                                   {"mirror", "the mirror sphere", 0.2, 0.55}};
+  const std::vector<CropPlace> cornell{{"shadow", "the floor between the blocks: their shadows", 0.36, 0.70},
+                                       {"corner", "the ceiling by the green wall: the gather's noise", 0.70, 0.10}};
+  const std::vector<CropPlace> spheres{{"caustic", "under the glass sphere: the caustic", 0.53, 0.64},
+                                       {"mirror", "the mirror sphere", 0.2, 0.55}};
+  const std::vector<CropPlace>& places = s.scene == "cornell" ? cornell : spheres;
   const int side = std::min({std::max(8, s.width / 6), s.width, s.height}), factor = std::max(1, 128 / side);
   for (const CropPlace& place : places) {
     std::vector<gi::Image> row;
@@ -170,17 +163,17 @@ void crops(const Settings& s, const std::vector<Picture>& pictures, const gi::Im
 }
 
 // Everything above for one scene.
-void two_pass_lesson(const Settings& s, gi::Lesson& lesson) {
+void two_pass_lesson(const Settings& s, const std::optional<gi::Truth>& truth, gi::Lesson& lesson) {
   const gi::TwoPassScene scene = gi::make_two_pass_scene(s.scene);
-  const gi::RadiosityPass pass = gi::radiosity_pass(scene, s.radiosity);
+  const gi::RadiosityPass pass = gi::radiosity_pass(scene, s.radiosity, s.threads);
   lesson.say(s.scene + ", pass 1: " + std::to_string(pass.handoff.mesh.elements.size()) + " elements, hemicube " +
              std::to_string(pass.hemicube_resolution) + ", " + std::to_string(pass.shots) + " shots, " +
              gi::status_name(pass.status));
   const std::vector<Picture> pictures = render_all(s, scene, pass, lesson);
-  std::string why;
-  const auto truth = stored_reference(s, why);
   if (!truth) {
-    lesson.say("no path-traced picture of " + s.scene + " to score against (" + why + ")");
+    const std::string side = std::to_string(gi::stored_truth_side(s.scene).value());
+    lesson.say("no path-traced picture of " + s.scene + " to score against (the stored truth is " + side + " x " +
+               side + ": a square size that divides it is scored)");
     return;
   }
   const gi::View view{scene.camera, s.width, s.height, "the stored reference, averaged down"};
@@ -215,18 +208,24 @@ int main(int argc, char** argv) {
       .add("--elements", s.radiosity.elements, "about how many radiosity elements", 10, 20000)
       .add("--samples", s.eye.samples, "n x n eye rays per pixel", 1, 16)
       .add("--light-cells", s.eye.light_cells, "n x n shadow rays per light at each diffuse hit", 1, 64)
-      .add("--gather", s.eye.gather_strata, "n x n final-gather rays at each diffuse hit", 1, 64);
-  return lesson.run(argc, argv, [&] {
-    s.threads = s.radiosity.threads = s.eye.threads = lesson.threads();
-    s.seed = s.radiosity.seed = s.eye.seed = lesson.seed();
-    s.eye.width = s.width, s.eye.height = s.height;
-    s.radiosity.form_factors.hemicube_resolution = 0;  // from the mesh
-    const std::vector<std::string> names =
-        s.scene == "both" ? gi::two_pass_scene_names() : std::vector<std::string>{s.scene};
-    for (const std::string& name : names) {
+      .add("--gather", s.eye.gather_strata, "n x n final-gather rays at each diffuse hit", 1, 64)
+      .add("--references", s.references, "the folder of the stored path-traced truths (SCENE_SIDExSIDE.*)");
+  // Before any work: a damaged or stale truth stops the lesson in one line.
+  std::vector<std::pair<Settings, std::optional<gi::Truth>>> boxes;
+  lesson.add_check([&] {
+    for (const std::string& name : s.scene == "both" ? gi::two_pass_scene_names() : std::vector<std::string>{s.scene}) {
       Settings one = s;
       one.scene = name;
-      two_pass_lesson(one, lesson);
+      boxes.emplace_back(one, stored_truth(one));
+    }
+  });
+  return lesson.run(argc, argv, [&] {
+    for (auto& [one, truth] : boxes) {
+      one.threads = lesson.threads();
+      one.seed = one.radiosity.seed = lesson.seed();
+      one.eye.width = one.width, one.eye.height = one.height;
+      one.radiosity.form_factors.hemicube_resolution = 0;  // from the mesh
+      two_pass_lesson(one, truth, lesson);
     }
   });
 }

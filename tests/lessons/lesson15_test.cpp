@@ -56,7 +56,7 @@ TEST(Lesson15, RefusesABadSizeTheReferencesOwnSeedAndAMissingReference) {
   // at its own size would repeat the truth's samples and score too well.
   refused("--size 256 --seed 1000003", 2, "one of the reference's own seeds");
   refused("--reference " + out_dir("15_nowhere") + "/cornell_256x256", 1,
-          "15_radiosity_vs_path_tracing: error: the Cornell box reference cannot be used");
+          "15_radiosity_vs_path_tracing: error: the stored truth of cornell cannot be used");
 }
 
 }  // namespace

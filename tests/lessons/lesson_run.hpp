@@ -1,34 +1,41 @@
 #pragma once
 // Running a lesson as a user does, and checking what it wrote.
-#include <sys/wait.h>
-
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "gi/core/platform/program.hpp"
 #include "gi/image/image_io.hpp"
+#include "support/process.hpp"
 
 namespace gi_test {
 
 struct LessonRun {
-  int status;          // the exit status, or -1 if the lesson died of a signal
+  int status;          // the exit status, -1 if the lesson was killed, 127 if it could not start
   std::string output;  // stdout and stderr together
 };
 
-// `args` go through the shell as written: quote what needs it ("--out ''").
+// The lesson and its arguments, as the build runs its programs.
+inline std::vector<std::string> lesson_command(const std::string& lesson, const std::vector<std::string>& args) {
+  std::vector<std::string> command{std::string(GI_BIN_DIR) + "/" + lesson};
+  command.insert(command.end(), args.begin(), args.end());
+  return emulated(command);
+}
+
+// `args` are split into words as a shell would: quote what needs it ("--out ''").
+// An hour at most: far beyond any lesson the tests run, even emulated.
 inline LessonRun run(const std::string& lesson, const std::string& args) {
-  const std::string command = std::string(GI_BIN_DIR) + "/" + lesson + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer;
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  try {
+    const gi::platform::ProgramRun r = gi::platform::run_program(lesson_command(lesson, shell_words(args)), 3600);
+    return {r.status, r.output};
+  } catch (const std::runtime_error& e) {
+    return {127, e.what()};
+  }
 }
 
 inline std::string out_dir(const std::string& name) { return std::string(GI_WORK_DIR) + "/out/" + name; }

@@ -21,7 +21,7 @@ TEST(ReferenceImage, WhittedSceneMatches) {
   settings.width = 96;
   settings.height = 72;
   settings.trace.max_depth = 8;
-  const gi::Image image = gi::render(gi::make_world(gi::make_scene("whitted")), settings).image;
+  const gi::Image image = gi::render(gi::make_world(gi::make_scene("whitted")), settings, 1, 0).image;
   if (std::getenv("GI_UPDATE_REFERENCES")) gi::write_png(image, reference_file);
 
   const gi::Image reference = gi::read_png(reference_file);

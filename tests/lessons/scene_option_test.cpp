@@ -1,4 +1,4 @@
-// --scene NAME|FILE, --camera and --light-scale as a user meets them (issue 18): every
+// --scene NAME|FILE, --camera and --light-scale as a user meets them: every
 // lesson that renders takes a scene file, a file renders what its built-in twin
 // renders, and bad scene input is one line, status 2 and nothing written.
 #include <gtest/gtest.h>

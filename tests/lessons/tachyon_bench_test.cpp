@@ -18,6 +18,7 @@
 
 #include "02_recursive/external_program.hpp"
 #include "02_recursive/tachyon_output.hpp"
+#include "gi/core/platform/temporary_folder.hpp"
 #include "lesson_run.hpp"
 
 namespace {
@@ -143,7 +144,7 @@ class FakeTachyon {
   bool temp_is_empty() const { return fs::is_empty(temp_.path()); }
 
  private:
-  gi::TemporaryFolder folder_, temp_;
+  gi::platform::TemporaryFolder folder_, temp_;
   ScopedVariable path_, tmpdir_;
 };
 
@@ -216,7 +217,7 @@ TEST(TachyonBench, PrintsTheMediansRangesAndRatiosOfTachyonsTimes) {
 }
 
 TEST(TachyonBench, WithoutTachyonSaysHowToInstallItAndExitsOne) {
-  const gi::TemporaryFolder nothing("gi_empty_path_");
+  const gi::platform::TemporaryFolder nothing("gi_empty_path_");
   const ScopedVariable path("PATH", nothing.path());
   fs::remove_all(out_dir("02_no_tachyon"));
   const LessonRun r = run("02_tachyon_bench", "--out " + out_dir("02_no_tachyon"));

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
-#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/pathtrace/path_truth.hpp"
+#include "gi/radiosity/display/surface_mask.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 namespace {
@@ -47,11 +47,8 @@ TEST(MonteCarloErrorLaw, HoldsForThePathTracerOnTheCornellBox) {
   // would put them 50% and more apart.
   const gi::RadiosityScene box = gi::cornell_box();
   const gi::PathScene scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
-  std::string why;
-  const auto stored = gi::load_reference(std::filesystem::path(GI_SOURCE_DIR) / "lessons/references/cornell_256x256",
-                                         gi::reference_fingerprint(scene, {}, 256, 256), &why);
-  ASSERT_TRUE(stored) << why;
-  const gi::PathReference truth = gi::downsample(*stored, 8);
+  const gi::Truth truth =
+      gi::stored_truth(std::filesystem::path(GI_SOURCE_DIR) / "lessons/references", "cornell", 32, 32);
   const gi::BlockMask mask = gi::interior_blocks(box.surfaces, box.camera, 32, 32, 1);
   const double r = gi::reference_noise(truth.standard_error, truth.mean, mask).relative_rms;
   const int seeds = 12;
@@ -60,11 +57,11 @@ TEST(MonteCarloErrorLaw, HoldsForThePathTracerOnTheCornellBox) {
     gi::Film film = gi::make_film(32, 32, 500 + seed);
     std::vector<gi::ErrorAtSamples> points;
     for (int spp = 1; spp <= 4; spp *= 2) {
-      gi::render_pass(film, scene, {}, spp - static_cast<int>(film.samples), 0);
+      gi::path_trace(film, scene, {}, spp - static_cast<int>(film.samples), 0);
       points.push_back({double(spp), gi::picture_error(gi::film_mean(film), truth.mean, mask).relative_rms});
     }
     const double v = gi::monte_carlo_variance(points, r);
-    gi::render_pass(film, scene, {}, 12, 0);
+    gi::path_trace(film, scene, {}, 12, 0);
     const double e16 = gi::picture_error(gi::film_mean(film), truth.mean, mask).relative_rms;
     differences.push_back(v - 16 * (e16 * e16 - r * r));
     fitted.push_back(v);

@@ -9,7 +9,7 @@
 
 #include <cstring>
 
-#include "gi/pathtrace/film.hpp"
+#include "gi/pathtrace/path_trace.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/scene/builtin_scenes.hpp"
 #include "gi/scene/cornell_box.hpp"
@@ -33,7 +33,7 @@ t::Estimate render_mean(const gi::PathScene& scene, const gi::PathSettings& sett
   std::vector<double> means;
   for (int k = 0; k < seeds; ++k) {
     gi::Film film = gi::make_film(size, size, first_seed + k);
-    gi::render_pass(film, scene, settings, spp, 0);
+    gi::path_trace(film, scene, settings, spp, 0);
     means.push_back(picture_mean(gi::film_mean(film)));
   }
   return t::estimate(means);
@@ -116,7 +116,7 @@ TEST(PathTracer, TheSkyAloneIsTheBackground) {
   empty.background = gi::Color(0.2, 0.4, 0.8);
   const gi::PathScene scene = gi::make_path_scene(empty);
   gi::Film film = gi::make_film(4, 3, 1);
-  gi::render_pass(film, scene, {}, 3, 1);
+  gi::path_trace(film, scene, {}, 3, 1);
   for (const gi::Pixel& p : gi::film_mean(film).pixels) EXPECT_EQ(p, gi::Pixel(gi::Color(0.2, 0.4, 0.8)));
   for (const gi::Pixel& p : gi::film_variance(film).pixels) EXPECT_EQ(p, gi::Pixel(0.0f));
 }
@@ -124,7 +124,7 @@ TEST(PathTracer, TheSkyAloneIsTheBackground) {
 TEST(PathTracer, DepthZeroShowsOnlyWhatEmits) {
   const gi::PathScene scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
   gi::Film film = gi::make_film(32, 32, 1);
-  gi::render_pass(film, scene, with(gi::Strategy::Mis, 0), 4, 0);
+  gi::path_trace(film, scene, with(gi::Strategy::Mis, 0), 4, 0);
   int lit = 0;
   const gi::Color L = gi::cornell_palette().light_exitance / gi::pi;  // the light's radiance
   for (const gi::Pixel& p : gi::film_mean(film).pixels) {
@@ -140,7 +140,7 @@ TEST(PathTracer, SameBytesForAnyThreadCountAndAnySplitIntoPasses) {
   const gi::PathScene scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell-spheres"));
   const auto render = [&](int threads, std::vector<int> passes) {
     gi::Film film = gi::make_film(24, 20, 9);
-    for (int spp : passes) gi::render_pass(film, scene, {}, spp, threads);
+    for (int spp : passes) gi::path_trace(film, scene, {}, spp, threads);
     return std::make_pair(gi::film_mean(film), gi::film_variance(film));
   };
   const auto one = render(1, {4});
@@ -166,7 +166,7 @@ TEST(PathTracer, EachPixelsVarianceEstimateMatchesTheSpreadAcrossSeeds) {
   double estimated = 0;
   for (int k = 0; k < seeds; ++k) {
     gi::Film film = gi::make_film(size, size, 100 + k);
-    gi::render_pass(film, scene, with(gi::Strategy::Lights), 8, 0);
+    gi::path_trace(film, scene, with(gi::Strategy::Lights), 8, 0);
     const gi::Image mean = gi::film_mean(film), variance = gi::film_variance(film);
     for (int i = 0; i < size * size; ++i)
       for (int c = 0; c < 3; ++c) {
@@ -186,7 +186,7 @@ TEST(PathTracer, BadSettingsAreRefused) {
   EXPECT_THROW(gi::make_film(10, 20000, 1), std::invalid_argument);
   gi::Film film = gi::make_film(2, 2, 1);
   const gi::PathScene scene = gi::make_path_scene(gi::furnace_scene(0.5, 1));
-  EXPECT_THROW(gi::render_pass(film, scene, {}, -1, 1), std::invalid_argument);
+  EXPECT_THROW(gi::path_trace(film, scene, {}, -1, 1), std::invalid_argument);
   EXPECT_THROW(gi::furnace_scene(1.0, 1.0), std::invalid_argument);
   gi::Scene point_lit;
   point_lit.add(gi::PointLight{{0, 1, 0}, gi::Color(1)});
@@ -199,7 +199,7 @@ TEST(PathTracer, EveryNamedSceneRenders) {
     const gi::PathScene scene = gi::make_path_scene(gi::make_path_scene_by_name(name));
     EXPECT_FALSE(scene.lights.lights.empty() && scene.scene().background == gi::Color(0.0)) << name << " is dark";
     gi::Film film = gi::make_film(8, 6, 1);
-    gi::render_pass(film, scene, {}, 2, 0);
+    gi::path_trace(film, scene, {}, 2, 0);
     EXPECT_EQ(film.discarded, 0) << name;
     EXPECT_GT(picture_mean(gi::film_mean(film)), 0.0) << name;
   }

@@ -23,7 +23,7 @@ gi::Mesh mesh_of(const gi::RadiosityScene& scene, int elements_per_side) {
 }
 
 std::vector<Color> direct(const gi::Mesh& mesh, int cells, int points, int threads = 0) {
-  return gi::direct_radiosity(gi::FormFactorScene(gi::element_shapes(mesh)), mesh, {cells, points, threads});
+  return gi::direct_radiosity(gi::FormFactorScene(gi::element_shapes(mesh)), mesh, {cells, points}, threads);
 }
 
 // Two unit squares a unit apart, the bottom one the light (E = 1), the top grey (0.5):
@@ -70,7 +70,7 @@ TEST(DirectLight, HiddenLightGivesNothing) {
 TEST(DirectLight, PenumbraAgreesWithMonteCarlo) {
   const gi::Mesh mesh = mesh_of(gi::occluded_squares(), 4);
   const gi::FormFactorScene scene(gi::element_shapes(mesh));
-  const std::vector<Color> D = gi::direct_radiosity(scene, mesh, {16, 4, 0});
+  const std::vector<Color> D = gi::direct_radiosity(scene, mesh, {16, 4}, 0);
   gi::FormFactorSettings mc;
   mc.method = gi::FormFactorMethod::MonteCarlo;
   mc.rays = 200000;
@@ -120,11 +120,10 @@ TEST(DirectLight, SameForAnyThreadCount) {
 TEST(DirectLight, RejectsBadSettings) {
   const gi::Mesh mesh = mesh_of(gi::parallel_squares(), 1);
   const gi::FormFactorScene scene(gi::element_shapes(mesh));
-  EXPECT_THROW(gi::direct_radiosity(scene, mesh, {0, 2, 0}), std::invalid_argument);
-  EXPECT_THROW(gi::direct_radiosity(scene, mesh, {8, 9, 0}), std::invalid_argument);
-  EXPECT_THROW(gi::direct_radiosity(scene, mesh, {8, 2, -1}), std::invalid_argument);
+  EXPECT_THROW(gi::direct_radiosity(scene, mesh, {0, 2}, 0), std::invalid_argument);
+  EXPECT_THROW(gi::direct_radiosity(scene, mesh, {8, 9}, 0), std::invalid_argument);
   const gi::Mesh other = mesh_of(gi::parallel_squares(), 2);
-  EXPECT_THROW(gi::direct_radiosity(scene, other, {}), std::invalid_argument);
+  EXPECT_THROW(gi::direct_radiosity(scene, other, {}, 0), std::invalid_argument);
   EXPECT_THROW(gi::indirect_system(gi::make_system(mesh, {}), {}), std::invalid_argument);
 }
 
@@ -144,7 +143,9 @@ TEST(DirectDisplay, EachPixelShowsItsPointsDirectLight) {
   display.width = display.height = 63;
   display.samples = 1;
   const gi::Camera camera{{0, 0.5, 0}, {0, 1, 0}, {0, 0, 1}, 30};
-  const gi::Image picture = gi::render_direct_light(elements, mesh, camera, display, {8, 1, 0});
+  const gi::DirectLighting lights(mesh, 8);
+  const gi::Image picture =
+      gi::render_display(gi::DirectRadiance{elements, mesh, lights}, camera, display, 1, 0).radiance;
   const gi::CameraFrame frame = gi::camera_frame(camera, 63, 63);
   const gi::Polygon light = gi::make_polygon(scene.surfaces[0].corners);
   for (int y = 0; y < 63; y += 31)

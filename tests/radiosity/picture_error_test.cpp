@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "gi/radiosity/form_factors/form_factors.hpp"
-#include "gi/radiosity/display/picture_error.hpp"
+#include "gi/radiosity/display/surface_mask.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 
 namespace {

@@ -20,7 +20,7 @@ gi::Recipe hemicube_recipe(int elements, int resolution, gi::RecipeSolver solver
 TEST(RecipeHemicube, ACoarseHemicubeOnAFineMeshIsWarnedAbout) {
   const gi::RadiosityScene box = gi::cornell_box();
   for (gi::RecipeSolver solver : {gi::RecipeSolver::GaussSeidel, gi::RecipeSolver::Progressive}) {
-    const gi::RecipeResult r = gi::solve_recipe(box.surfaces, hemicube_recipe(1000, 20, solver));
+    const gi::RecipeResult r = gi::solve_recipe(box.surfaces, hemicube_recipe(1000, 20, solver), 0);
     EXPECT_GT(r.hemicube.sub_cell_missed, 0) << name(solver);
     EXPECT_GE(r.hemicube.sub_cell_receivers, r.hemicube.sub_cell_missed) << name(solver);
     EXPECT_GT(r.hemicube.rows_with_sub_cell_receivers, 0) << name(solver);
@@ -38,7 +38,7 @@ TEST(RecipeHemicube, AFinerHemicubeAliasesLess) {
   double last = 1;
   for (int resolution : {20, 60, 200}) {
     const gi::RecipeResult r =
-        gi::solve_recipe(box.surfaces, hemicube_recipe(300, resolution, gi::RecipeSolver::GaussSeidel));
+        gi::solve_recipe(box.surfaces, hemicube_recipe(300, resolution, gi::RecipeSolver::GaussSeidel), 0);
     EXPECT_LT(r.hemicube.worst_sub_cell_share, last) << "resolution " << resolution;
     last = r.hemicube.worst_sub_cell_share;
     if (resolution == 200) {
@@ -53,7 +53,7 @@ TEST(RecipeHemicube, TheResolutionChosenFromTheMeshIsNotWarnedAbout) {
   const gi::RadiosityScene box = gi::cornell_box();
   gi::Recipe recipe = hemicube_recipe(4000, 0, gi::RecipeSolver::Progressive);
   recipe.elements_per_side = 3;
-  const gi::RecipeResult r = gi::solve_recipe(box.surfaces, recipe);
+  const gi::RecipeResult r = gi::solve_recipe(box.surfaces, recipe, 0);
   EXPECT_GT(r.form_factors.hemicube_resolution, 100);
   EXPECT_EQ(r.form_factors.hemicube_resolution, gi::hemicube_resolution_for(r.mesh));
   EXPECT_EQ(gi::hemicube_warning(r), "");
@@ -64,7 +64,7 @@ TEST(RecipeHemicube, OtherMethodsHaveNoCellsToAlias) {
   gi::Recipe r = hemicube_recipe(300, 100, gi::RecipeSolver::GaussSeidel);
   r.form_factors.method = gi::FormFactorMethod::MonteCarlo;
   r.form_factors.rays = 64;
-  const gi::RecipeResult result = gi::solve_recipe(box.surfaces, r);
+  const gi::RecipeResult result = gi::solve_recipe(box.surfaces, r, 0);
   EXPECT_EQ(result.hemicube.sub_cell_receivers, 0);
   EXPECT_EQ(result.hemicube.worst_sub_cell_share, 0);
   EXPECT_EQ(gi::hemicube_warning(result), "");

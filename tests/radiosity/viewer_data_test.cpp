@@ -379,8 +379,9 @@ TEST(ViewerData, HierarchyRefusesBadIndices) {
 // What the page sums when a leaf is picked -- the light of the links of the leaf and
 // of its ancestors -- recomputed here from the file's own arrays (the parent chain,
 // the receivers), against the solver run on: one more gather and push-pull from the
-// B the file was written with hands every leaf B_new - E = rho * sum of those lights,
-// to float32 rounding. And, for every link from a leaf, light = F V B_source.
+// B the file was written with hands every leaf B_new - source = gather_scale * rho *
+// sum of those lights, to float32 rounding. And, for every link from a leaf, light = F V
+// sent_source (its B times its send_scale, balance.hpp).
 TEST(ViewerData, ALeafsLinksAndItsAncestorsAddUpToWhatTheSolverGathers) {
   const gi::HierarchicalRun& run = hierarchical_box();
   const gi::ViewerData d = gi::hierarchical_viewer_data("13_x", "t", run, gi::cornell_box().camera, 1.5);
@@ -410,10 +411,10 @@ TEST(ViewerData, ALeafsLinksAndItsAncestorsAddUpToWhatTheSolverGathers) {
       for (int l : by_receiver[n]) sum += Color(light[3 * l], light[3 * l + 1], light[3 * l + 2]);
     const gi::Node& leaf = next.nodes[element_node[e]];
     const Color r(rho[3 * e], rho[3 * e + 1], rho[3 * e + 2]);
-    worst = std::max(worst, gi::max_component(glm::abs(r * sum - (leaf.B - leaf.E))));
+    worst = std::max(worst, gi::max_component(glm::abs(leaf.gather_scale * r * sum - (leaf.B - leaf.source))));
     worst_handed = std::max(worst_handed, gi::max_component(glm::abs(r * sum - Color(handed[3 * e], handed[3 * e + 1],
                                                                                        handed[3 * e + 2]))));
-    largest = std::max(largest, gi::max_component(leaf.B - leaf.E));
+    largest = std::max(largest, gi::max_component(leaf.B - leaf.source));
   }
   ASSERT_GT(largest, 0);
   EXPECT_LT(worst, 1e-5 * largest) << "the links of a leaf and its ancestors are all the light it gathers";
@@ -423,7 +424,8 @@ TEST(ViewerData, ALeafsLinksAndItsAncestorsAddUpToWhatTheSolverGathers) {
     const gi::Node& q = run.hierarchy.nodes[source[l]];
     if (!q.leaf()) continue;
     ++leaf_sources;
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(light[3 * l + k], F[l] * V[l] * q.B[k], 1e-6 * gi::max_component(q.B) + 1e-30);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(light[3 * l + k], F[l] * V[l] * q.sent[k], 1e-6 * gi::max_component(q.sent) + 1e-30);
   }
   EXPECT_GT(leaf_sources, 0u);
   std::cout << "hierarchy: " << element_node.size() << " leaves, " << receiver.size() << " links; worst |rho sum - gathered| "

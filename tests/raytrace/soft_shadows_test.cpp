@@ -89,14 +89,12 @@ TEST(SoftShadows, ShadowRaysPerHitAndSameImageForAnyThreadCount) {
   settings.height = 30;
   settings.trace.max_depth = 0;
   settings.trace.soft_shadows = {gi::LightSampling::Random, 3};
-  settings.threads = 1;
-  const gi::RenderResult one = gi::render(world, settings);
+  const gi::RenderResult one = gi::render(world, settings, 1, 1);
   // An eye ray that hits a surface casts 9 shadow rays, fewer where part of the light
   // is behind the surface; most of the picture is floor.
   EXPECT_LE(one.counts.of(gi::RayKind::Shadow), 9u * 40 * 30);
   EXPECT_GT(one.counts.of(gi::RayKind::Shadow), 9u * 40 * 30 / 2);
-  settings.threads = 3;
-  EXPECT_EQ(gi::render(world, settings).image.pixels, one.image.pixels);
+  EXPECT_EQ(gi::render(world, settings, 1, 3).image.pixels, one.image.pixels);
 }
 
 TEST(SoftShadows, BadSettingsAreRejected) {

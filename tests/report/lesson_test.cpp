@@ -4,8 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <fstream>
 #include <sstream>
@@ -15,6 +13,7 @@
 #include "../support/files.hpp"
 #include "gi/core/atomic_file.hpp"
 #include "gi/core/not_implemented.hpp"
+#include "gi/core/platform/process.hpp"
 #include "gi/image/image_io.hpp"
 #include "gi/report/options.hpp"
 
@@ -176,12 +175,12 @@ TEST(Lesson, ARunThatIsKilledLeavesARunningRecordAndItsTemporariesAreCleared) {
   std::ofstream(out / "outputs.json") << "{\"status\": \"complete\"}";  // an older run's record
   std::ofstream(out / "index.html") << "an older run's page";
   std::ofstream(out / ".a.png.999999999.0.partial") << "half";          // a dead process's temporary
-  const std::string alive = ".b.png." + std::to_string(::getpid()) + ".0.partial";
+  const std::string alive = ".b.png." + std::to_string(gi::platform::current_process_id()) + ".0.partial";
   std::ofstream(out / alive) << "being written";
   const LessonRun r = run({"--out", out.string()}, [&](gi::Lesson&) {
     const std::string record = gi_test::file_text(out / "outputs.json");
     EXPECT_NE(record.find("\"status\": \"running\""), std::string::npos) << record;
-    EXPECT_NE(record.find("\"process\": {\"id\": " + std::to_string(::getpid()) + ", \"started\": \""),
+    EXPECT_NE(record.find("\"process\": {\"id\": " + std::to_string(gi::platform::current_process_id()) + ", \"started\": \""),
               std::string::npos) << record;
     EXPECT_FALSE(fs::exists(out / "index.html")) << "a run killed now must not leave the old page";
   });

@@ -7,8 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include <unistd.h>
-
+#include "gi/core/platform/process.hpp"
 #include "gi/scene/scene_file.hpp"
 
 namespace gi_test {
@@ -19,7 +18,7 @@ namespace gi_test {
 // two tests sharing a name such as "error" must not wipe each other's files.
 inline std::filesystem::path scratch_folder(const std::string& name) {
   const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
-  const std::string owner = std::to_string(::getpid()) + "_" +
+  const std::string owner = std::to_string(gi::platform::current_process_id()) + "_" +
                             (test ? std::string(test->test_suite_name()) + "." + test->name() : "none");
   const std::filesystem::path folder = std::filesystem::path(testing::TempDir()) / "gi_scene_files" / owner / name;
   std::filesystem::remove_all(folder);

@@ -1,4 +1,4 @@
-// Every built-in scene is also a file under lessons/scenes/ (issue 18). The file must
+// Every built-in scene is also a file under lessons/scenes/. The file must
 // hold the same scene, value for value, and render the same bytes: the C++ is the
 // source, so when it changes (new reflectances, say) these tests name the value the
 // file must follow.
@@ -140,7 +140,7 @@ gi::Image radiosity_picture(const gi::RadiosityScene& scene) {
   const gi::RadiositySystem system = gi::make_system(mesh, gi::form_factor_matrix(receivers, hemicube, 2));
   gi::DisplaySettings display;
   display.width = 48, display.height = 40;
-  return gi::render_radiosity_picture(receivers, mesh, gi::solve_direct(system).B, scene.camera, display).radiance;
+  return gi::render_radiosity_picture(receivers, mesh, gi::solve_direct(system).B, scene.camera, display, 1, 0).radiance;
 }
 
 }  // namespace
@@ -158,14 +158,14 @@ TEST(SceneFiles, EveryBuiltInRayTracingSceneIsAFileOfTheSameValues) {
 
 TEST(SceneFiles, EveryBuiltInRayTracingSceneRendersTheSameBytesFromItsFile) {
   gi::RenderSettings settings;
-  settings.width = 64, settings.height = 48, settings.threads = 2;
+  settings.width = 64, settings.height = 48;
   settings.trace.max_depth = 4;
   settings.sampling = {gi::Sampler::Jittered, 2};
   settings.trace.soft_shadows = {gi::LightSampling::Jittered, 2};
   for (const std::string& name : gi::scene_names()) {
     std::vector<std::string> warnings;
-    const gi::Image code = gi::render(gi::make_world(gi::make_scene(name)), settings).image;
-    const gi::Image file = gi::render(gi::make_world(gi::load_scene(scene_file(name), warnings)), settings).image;
+    const gi::Image code = gi::render(gi::make_world(gi::make_scene(name)), settings, 1, 2).image;
+    const gi::Image file = gi::render(gi::make_world(gi::load_scene(scene_file(name), warnings)), settings, 1, 2).image;
     EXPECT_TRUE(same_bytes(code, file)) << name << ": the file's picture differs from the built-in scene's";
     EXPECT_EQ(gi::fingerprint(gi::make_scene(name)), gi::fingerprint(gi::load_scene(scene_file(name), warnings)));
   }

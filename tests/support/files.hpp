@@ -1,6 +1,9 @@
 #pragma once
 // Files for tests: a small disk made on purpose, and what a folder or a file holds.
+#if defined(__linux__)
 #include <sys/mount.h>
+#include <unistd.h>
+#endif
 
 #include <cerrno>
 #include <cstdlib>
@@ -14,12 +17,16 @@
 namespace gi_test {
 
 // A file system of a few kilobytes mounted for one test: a full disk, or a read-only
-// one, made on purpose (a tmpfs; mount(2) needs root). Where it cannot be made,
-// mounted() is false and why_not() says why, for GTEST_SKIP.
+// one, made on purpose (a tmpfs: Linux, and mount(2) needs root). Where it cannot be
+// made, mounted() is false and why_not() says why, for GTEST_SKIP.
 class SmallDisk {
  public:
   // `kilobytes` of space; read_only: nothing can be written at all.
   explicit SmallDisk(int kilobytes, bool read_only = false) {
+#if !defined(__linux__)
+    (void)kilobytes, (void)read_only;
+    why_not_ = "a small disk is a Linux tmpfs, which this system does not have";
+#else
     std::string pattern = (std::filesystem::temp_directory_path() / "gi_small_disk_XXXXXX").string();
     if (!mkdtemp(pattern.data())) {
       why_not_ = std::string("cannot make a mount point: ") + std::strerror(errno);
@@ -32,9 +39,12 @@ class SmallDisk {
       return;
     }
     mounted_ = true;
+#endif
   }
   ~SmallDisk() {
+#if defined(__linux__)
     if (mounted_) ::umount2(path_.c_str(), MNT_DETACH);
+#endif
     std::error_code ignored;
     if (!path_.empty()) std::filesystem::remove(path_, ignored);
   }

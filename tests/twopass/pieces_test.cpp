@@ -111,7 +111,7 @@ TEST(TwoPassSettings, OutOfRangeThrows) {
   bad([](gi::TwoPassSettings& s) { s.width = 0; });
   gi::RadiosityPassSettings r;
   r.receiver_strata = 0;
-  EXPECT_THROW(gi::radiosity_pass(gi::make_two_pass_scene("cornell"), r), std::invalid_argument);
+  EXPECT_THROW(gi::radiosity_pass(gi::make_two_pass_scene("cornell"), r, 0), std::invalid_argument);
   EXPECT_THROW(gi::make_two_pass_scene("cornell-blocks"), std::invalid_argument);
   EXPECT_THROW(gi::make_handoff(gi::Mesh{}, {gi::Color(1.0)}, {}), std::invalid_argument);
 }

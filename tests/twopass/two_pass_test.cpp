@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "gi/pathtrace/path_scenes.hpp"
-#include "gi/pathtrace/reference.hpp"
+#include "gi/pathtrace/path_truth.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/twopass/picture_mask.hpp"
 #include "gi/twopass/radiosity_pass.hpp"
@@ -38,12 +38,12 @@ TEST(TwoPass, TheFurnaceGivesItsClosedFormEitherWay) {
   // the solver's 1e-4 (a false failure about once in 10^6 runs). Counting the direct
   // light twice would add rho E / pi = 0.16, about 25%.
   const gi::TwoPassScene scene = furnace();
-  const gi::RadiosityPass pass = gi::radiosity_pass(scene, small_pass(150));
+  const gi::RadiosityPass pass = gi::radiosity_pass(scene, small_pass(150), 0);
   ASSERT_EQ(pass.status, gi::SolveStatus::Converged);
   for (gi::IndirectLight indirect : {gi::IndirectLight::Mesh, gi::IndirectLight::FinalGather}) {
     gi::TwoPassSettings s;
     s.width = s.height = 24, s.samples = 1, s.gather_strata = 2, s.indirect = indirect;
-    const gi::Image picture = gi::render_two_pass(scene, pass.handoff, s);
+    const gi::Image picture = gi::render_two_pass(scene, pass.handoff, s, 1, 0);
     double sum = 0, sum2 = 0;
     for (const gi::Pixel& p : picture.pixels) sum += p.x, sum2 += double(p.x) * p.x;
     const double n = picture.pixels.size(), mean = sum / n;
@@ -58,21 +58,16 @@ TEST(TwoPass, TheDiffuseBoxAgreesWithThePathTracedReference) {
   // 3% still catches direct light counted twice (tens of per cent), a missing cosine or
   // a wrong B - E - D.
   const gi::TwoPassScene scene = gi::make_two_pass_scene("cornell");
-  const gi::PathScene path_scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
-  std::string why;
-  const auto truth = gi::load_reference(std::string(GI_SOURCE_DIR) + "/lessons/references/cornell_256x256",
-                                        gi::reference_fingerprint(path_scene, {}, 256, 256), &why);
-  ASSERT_TRUE(truth) << why;
-  const gi::PathReference small = gi::downsample(*truth, 4);
+  const gi::Truth small = gi::stored_truth(std::string(GI_SOURCE_DIR) + "/lessons/references", "cornell", 64, 64);
   const gi::BlockMask mask = gi::diffuse_interior_blocks(scene, 64, 64, 4);
   ASSERT_GE(mask.count(), 10);
   gi::RadiosityPassSettings p = small_pass(600);
   p.tolerance = 1e-4;
-  const gi::RadiosityPass pass = gi::radiosity_pass(scene, p);
+  const gi::RadiosityPass pass = gi::radiosity_pass(scene, p, 0);
   for (gi::IndirectLight indirect : {gi::IndirectLight::Mesh, gi::IndirectLight::FinalGather}) {
     gi::TwoPassSettings s;
     s.width = s.height = 64, s.indirect = indirect;
-    const gi::PictureError e = gi::picture_error(gi::render_two_pass(scene, pass.handoff, s), small.mean, mask);
+    const gi::PictureError e = gi::picture_error(gi::render_two_pass(scene, pass.handoff, s, 1, 0), small.mean, mask);
     EXPECT_LT(e.relative_rms, 0.03) << gi::name(indirect);
   }
 }
@@ -81,17 +76,13 @@ TEST(TwoPass, SameBytesForAnyThreadCount) {
   const gi::TwoPassScene scene = gi::make_two_pass_scene("cornell-spheres");
   gi::RadiosityPassSettings p = small_pass(200);
   p.tolerance = 1e-3;
-  p.threads = 1;
-  const gi::RadiosityPass one = gi::radiosity_pass(scene, p);
-  p.threads = 3;
-  const gi::RadiosityPass three = gi::radiosity_pass(scene, p);
+  const gi::RadiosityPass one = gi::radiosity_pass(scene, p, 1);
+  const gi::RadiosityPass three = gi::radiosity_pass(scene, p, 3);
   ASSERT_EQ(one.handoff.B, three.handoff.B) << "the radiosity pass";
   gi::TwoPassSettings s;
   s.width = s.height = 20, s.gather_strata = 2;
-  s.threads = 1;
-  const gi::Image a = gi::render_two_pass(scene, one.handoff, s);
-  s.threads = 3;
-  const gi::Image b = gi::render_two_pass(scene, one.handoff, s);
+  const gi::Image a = gi::render_two_pass(scene, one.handoff, s, 1, 1);
+  const gi::Image b = gi::render_two_pass(scene, one.handoff, s, 1, 3);
   EXPECT_EQ(a.pixels, b.pixels) << "the eye pass";
 }
 

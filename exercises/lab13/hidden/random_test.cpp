@@ -42,7 +42,7 @@ TEST(Ex13_4_RandomTrees, PushPullKeepsThePowerOfAnyTree) {
     node.gathered = gi::Color(rng.uniform(), rng.uniform(), rng.uniform());
     expected += node.shape.area * (node.gathered.x + node.gathered.y + node.gathered.z);
     if (static_cast<int>(n) < static_cast<int>(h.surfaces.size()))
-      expected += node.shape.area * (node.E.x + node.E.y + node.E.z);
+      expected += node.shape.area * (node.source.x + node.source.y + node.source.z);
   }
   double power = 0;
   for (int root = 0; root < static_cast<int>(h.surfaces.size()); ++root) {

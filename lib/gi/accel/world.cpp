@@ -12,8 +12,8 @@ namespace {
 // Brute force over one kind of primitive. Each hit shortens the ray, so later
 // primitives only count when nearer.
 template <class Primitive>
-[[gnu::flatten]] void closest_in(const std::vector<Primitive>& primitives, Ray& ray, std::optional<Hit>& nearest,
-                                  TraversalCounts& counts) {
+void closest_in(const std::vector<Primitive>& primitives, Ray& ray, std::optional<Hit>& nearest,
+                TraversalCounts& counts) {
   for (std::size_t i = 0; i < primitives.size(); ++i) {
     ++counts.primitive_tests;
     if (auto hit = intersect(ray, primitives[i])) {
@@ -25,7 +25,7 @@ template <class Primitive>
 }
 
 template <class Primitive>
-[[gnu::flatten]] bool any_in(const std::vector<Primitive>& primitives, const Ray& ray, TraversalCounts& counts) {
+bool any_in(const std::vector<Primitive>& primitives, const Ray& ray, TraversalCounts& counts) {
   for (const Primitive& primitive : primitives) {
     ++counts.primitive_tests;
     if (intersect(ray, primitive)) return true;
@@ -34,11 +34,9 @@ template <class Primitive>
 }
 
 // A bounding box per object: the slab test first, the object only when its box is hit.
-// Flattened like the tree's traversal (bvh_traverse.cpp): a call per box test would
-// cost as much as the test.
 template <class Primitive>
-[[gnu::flatten]] void closest_in_boxes(const std::vector<Primitive>& primitives, const Aabb* boxes, Ray& ray,
-                                        const vec3& inv_dir, std::optional<Hit>& nearest, TraversalCounts& counts) {
+void closest_in_boxes(const std::vector<Primitive>& primitives, const Aabb* boxes, Ray& ray, const vec3& inv_dir,
+                      std::optional<Hit>& nearest, TraversalCounts& counts) {
   for (std::size_t i = 0; i < primitives.size(); ++i) {
     ++counts.box_tests;
     if (!slab_test(ray, inv_dir, boxes[i])) continue;
@@ -52,8 +50,8 @@ template <class Primitive>
 }
 
 template <class Primitive>
-[[gnu::flatten]] bool any_in_boxes(const std::vector<Primitive>& primitives, const Aabb* boxes, const Ray& ray,
-                                    const vec3& inv_dir, TraversalCounts& counts) {
+bool any_in_boxes(const std::vector<Primitive>& primitives, const Aabb* boxes, const Ray& ray, const vec3& inv_dir,
+                  TraversalCounts& counts) {
   for (std::size_t i = 0; i < primitives.size(); ++i) {
     ++counts.box_tests;
     if (!slab_test(ray, inv_dir, boxes[i])) continue;
@@ -61,18 +59,6 @@ template <class Primitive>
     if (intersect(ray, primitives[i])) return true;
   }
   return false;
-}
-
-// A copy of the ray, read one double at a time. The caller has just written the ray
-// double by double, and a plain copy reads it 16 bytes at a time: the processor
-// cannot hand a 16-byte read the data of two 8-byte writes still on their way to the
-// cache, so the read waits until they get there, and the work behind it with it.
-// perf put 10% of the s10 render on that wait (docs/02_recursive.md, "Where the time
-// goes"). `volatile` keeps the compiler from merging the reads.
-Ray copy_double_by_double(const Ray& ray) {
-  const volatile Ray& from = ray;
-  return Ray{vec3(from.origin.x, from.origin.y, from.origin.z),
-             vec3(from.direction.x, from.direction.y, from.direction.z), from.t_min, from.t_max};
 }
 
 }  // namespace
@@ -119,13 +105,15 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
   return world;
 }
 
+std::optional<Hit> closest_hit(const World& world, const Ray& query, TraversalCounts* counts) {
+  Ray ray = query;  // each hit shortens this copy
+  return closest_hit_in_place(world, ray, counts);
+}
+
 // The counts go to a local first: with counts == nullptr that costs a few register
-// increments per ray, and no branch in the inner loops. Not inlined into the tracer:
-// built into its recursive trace() the three methods' loops made a stack frame so
-// large that the whole tracer ran 5% slower.
-[[gnu::noinline]] std::optional<Hit> closest_hit(const World& world, const Ray& query, TraversalCounts* counts) {
+// increments per ray, and no branch in the inner loops.
+std::optional<Hit> closest_hit_in_place(const World& world, Ray& ray, TraversalCounts* counts) {
   const Scene& scene = world.scene;
-  Ray ray = copy_double_by_double(query);  // each hit shortens this copy
   TraversalCounts local;
   std::optional<Hit> nearest;
   switch (world.acceleration) {
@@ -155,7 +143,7 @@ World make_world(Scene scene, Acceleration acceleration, const BvhSettings& sett
   return nearest;
 }
 
-[[gnu::noinline]] bool any_hit(const World& world, const Ray& ray, TraversalCounts* counts) {
+bool any_hit(const World& world, const Ray& ray, TraversalCounts* counts) {
   const Scene& scene = world.scene;
   TraversalCounts local;
   bool hit = false;

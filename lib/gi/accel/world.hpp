@@ -50,6 +50,9 @@ World make_world(Scene scene, Acceleration acceleration = Acceleration::Bvh, con
 // surfaces at exactly the same t is reported. `counts`, when given, is added to
 // (FastBvh counts only the planes' tests: its walk counts nothing).
 std::optional<Hit> closest_hit(const World& world, const Ray& ray, TraversalCounts* counts = nullptr);
+// The same search on `ray` itself, which each hit shortens: on return ray.t_max is the
+// nearest hit's t (closest_hit searches a copy of its ray this way).
+std::optional<Hit> closest_hit_in_place(const World& world, Ray& ray, TraversalCounts* counts = nullptr);
 
 // Shadow-ray query: is anything hit with t in [t_min, t_max]? Stops at the first hit.
 bool any_hit(const World& world, const Ray& ray, TraversalCounts* counts = nullptr);

@@ -1,21 +1,21 @@
 #include "gi/core/atomic_file.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <system_error>
 
+#include "gi/core/platform/new_file.hpp"
+#include "gi/core/platform/process.hpp"
+
 namespace gi {
 
 AtomicFile::Buffer::~Buffer() {
-  if (fd_ >= 0) ::close(fd_);
+  if (fd_ >= 0) platform::close_file(fd_);
 }
 
 bool AtomicFile::Buffer::open(const std::filesystem::path& file) {
-  fd_ = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  fd_ = platform::open_new_file(file);
   if (fd_ < 0) error_ = errno;
   setp(data_, data_ + sizeof data_);
   return fd_ >= 0;
@@ -23,7 +23,7 @@ bool AtomicFile::Buffer::open(const std::filesystem::path& file) {
 
 bool AtomicFile::Buffer::flush_buffer() {
   for (const char* p = pbase(); p < pptr() && error_ == 0;) {
-    const ssize_t n = ::write(fd_, p, static_cast<std::size_t>(pptr() - p));
+    const long long n = platform::write_some(fd_, p, static_cast<std::size_t>(pptr() - p));
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) error_ = n < 0 ? errno : EIO;
     else p += n;
@@ -44,7 +44,7 @@ bool AtomicFile::Buffer::close() {
   if (fd_ < 0) return error_ == 0;
   flush_buffer();
   // close() can report what only shows when the data leaves (network file systems).
-  if (::close(fd_) != 0 && error_ == 0) error_ = errno;
+  if (platform::close_file(fd_) != 0 && error_ == 0) error_ = errno;
   fd_ = -1;
   return error_ == 0;
 }
@@ -55,8 +55,8 @@ AtomicFile::AtomicFile(std::filesystem::path file) : file_(std::move(file)) {
   std::error_code error;
   if (!folder.empty()) std::filesystem::create_directories(folder, error);
   if (error) throw WriteError("cannot create folder " + folder.string() + ": " + error.message());
-  temporary_ = folder / ("." + file_.filename().string() + "." + std::to_string(::getpid()) + "." +
-                         std::to_string(counter++) + ".partial");
+  const std::string process = std::to_string(platform::current_process_id());
+  temporary_ = folder / ("." + file_.filename().string() + "." + process + "." + std::to_string(counter++) + ".partial");
   if (!buffer_.open(temporary_))
     throw WriteError("cannot write " + file_.string() + ": " + std::strerror(buffer_.error()));
 }
@@ -78,8 +78,8 @@ std::uintmax_t AtomicFile::commit() {
   if (!buffer_.close() || !out_) fail(buffer_.error() ? buffer_.error() : EIO);
   std::error_code error;
   const std::uintmax_t size = std::filesystem::file_size(temporary_, error);
-  if (!error) std::filesystem::rename(temporary_, file_, error);
   if (error) fail(error.value());
+  if (const int failed = platform::replace_file(temporary_, file_)) fail(failed);
   committed_ = true;
   return size;
 }

@@ -1,15 +1,15 @@
 #include "gi/geometry/packed_spheres.hpp"
 
-#include <emmintrin.h>
-
 #include <cstring>
 #include <limits>
+
+#include "gi/core/simd.hpp"
 
 namespace gi {
 
 namespace {
 
-using Lanes = PackedSpheres::Lanes;
+using Lanes = simd::double4;
 constexpr int width = PackedSpheres::width;
 
 // The ray's numbers in every lane, once per ray rather than once per group.
@@ -47,12 +47,9 @@ struct LanesRay {
   const auto behind = (c0 > zero) & (h > zero);  // per lane: all bits set (true) or none
   const auto outside = (h * h - r.a * c0) < (minus_4_eps * h * h);
   const auto rejected = behind | outside;
-  // The four lanes' sign bits in an int, two at a time (SSE2's movmskpd): a loop over
-  // the lanes would move each one out of the vector register on its own.
-  __m128d low, high;
-  std::memcpy(&low, &rejected, sizeof low);
-  std::memcpy(&high, reinterpret_cast<const char*>(&rejected) + sizeof low, sizeof high);
-  return ~(_mm_movemask_pd(low) | _mm_movemask_pd(high) << 2) & 0xf;
+  // The four verdicts in an int at once (SSE2's movmskpd): a loop over the lanes would
+  // move each one out of the vector register on its own.
+  return static_cast<int>(~simd::lane_mask(rejected) & 0xf);
 }
 
 }  // namespace
@@ -71,10 +68,10 @@ PackedSpheres pack(const std::vector<Sphere>& spheres) {
   return packed;
 }
 
-// Compiled twice, for AVX2 and for the baseline; the program picks one when it starts.
-[[gnu::target_clones("avx2", "default"), gnu::flatten]] void closest_sphere(const PackedSpheres& packed,
-                                                              const std::vector<Sphere>& spheres, Ray& ray,
-                                                              std::optional<Hit>& nearest) {
+// Compiled twice, for AVX2 and for the baseline, where the toolchain can pick one as
+// the program starts (simd.hpp says where).
+GI_FOUR_DOUBLES_KERNEL void closest_sphere(const PackedSpheres& packed, const std::vector<Sphere>& spheres, Ray& ray,
+                                           std::optional<Hit>& nearest) {
   const LanesRay lanes = spread(ray);
   for (int k = 0; width * k < packed.count; ++k) {
     const int maybe = candidates(packed, k, lanes);
@@ -91,8 +88,7 @@ PackedSpheres pack(const std::vector<Sphere>& spheres) {
   }
 }
 
-[[gnu::target_clones("avx2", "default"), gnu::flatten]] int any_sphere(const PackedSpheres& packed,
-                                                         const std::vector<Sphere>& spheres, const Ray& ray) {
+GI_FOUR_DOUBLES_KERNEL int any_sphere(const PackedSpheres& packed, const std::vector<Sphere>& spheres, const Ray& ray) {
   const LanesRay lanes = spread(ray);
   for (int k = 0; width * k < packed.count; ++k) {
     const int maybe = candidates(packed, k, lanes);

@@ -17,16 +17,15 @@ namespace gi {
 // intersect() itself then runs only for the spheres that pass: the hits, and so the
 // pictures, are the plain loop's to the last bit.
 //
-// `Lanes` is GCC's vector extension: four doubles, and + - * < on two of them work
-// lane by lane, as four scalar operations would (IEEE arithmetic rounds each lane as
-// it rounds a scalar). A processor with AVX2 does the four in one instruction; the
-// baseline x86-64 (SSE2) in two.
+// The lanes are four doubles (simd::double4, gi/core/simd.hpp), and + - * < on two of
+// them work lane by lane, as four scalar operations would (IEEE arithmetic rounds each
+// lane as it rounds a scalar). A processor with AVX2 does the four in one instruction;
+// the baseline x86-64 (SSE2) and ARM64 (NEON) in two.
 struct PackedSpheres {
-  using Lanes = double __attribute__((vector_size(32)));
   static constexpr int width = 4;
-  // Four spheres, coordinate by coordinate. Plain arrays, read into Lanes with
-  // unaligned loads: a std::vector does not promise the 32-byte alignment that
-  // Lanes itself would need.
+  // Four spheres, coordinate by coordinate. Plain arrays, read into lanes with
+  // unaligned loads: a std::vector does not promise the 32-byte alignment that the
+  // lanes themselves would need.
   struct Group {
     double x[width], y[width], z[width];  // centres
     double r_squared[width];              // radius * radius, as intersect() computes it

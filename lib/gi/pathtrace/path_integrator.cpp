@@ -78,8 +78,12 @@ Color path_radiance(const PathScene& scene, const Ray& camera_ray, const PathSet
 
     // ---- Next-event estimation: a shadow ray to a point on a light -------------------
     if (sample_lights && !is_specular(bsdf)) {
+      // The numbers are drawn one at a time, the point's second coordinate before its
+      // first: as one call's arguments they would come in an order of the compiler's
+      // choosing (GCC's was this one), and the pictures would depend on the compiler.
       const double u_choice = rng.uniform();
-      const vec2 u(rng.uniform(), rng.uniform());
+      const double v = rng.uniform(), u0 = rng.uniform();
+      const vec2 u(u0, v);
       const LightSample y = sample_light(lights, s, hit->point, u_choice, u);
       const DirectSample direct = next_event_estimate(bsdf, hit->point, n, wo, y);
       if (max_component(direct.estimate) > 0 && unoccluded(scene.world, hit->point, n, y.point)) {
@@ -89,7 +93,8 @@ Color path_radiance(const PathScene& scene, const Ray& camera_ray, const PathSet
     }
 
     // ---- BSDF sampling: where the path goes next ------------------------------------
-    const vec2 u(rng.uniform(), rng.uniform());
+    const double v = rng.uniform(), u0 = rng.uniform();  // one at a time, as above
+    const vec2 u(u0, v);
     const std::optional<BsdfSample> next = sample_bsdf(bsdf, n, wo, u, rng.uniform());
     if (!next || max_component(next->weight) <= 0) break;
     beta *= next->weight;

@@ -75,16 +75,18 @@ SolverResult run_solver(const RadiositySystem& system, const Mesh& mesh, const S
 
 // Hierarchical radiosity from start to finish: refinement counts as its form
 // factors, the solves as its solver, the rest of its clock as the direct light.
-RecipeResult hierarchical_recipe(const std::vector<Surface>& surfaces, const Recipe& r) {
+RecipeResult hierarchical_recipe(const std::vector<Surface>& surfaces, const Recipe& r, int threads) {
   HierarchicalSettings settings = r.hierarchical;
   settings.exact_direct = r.exact_direct;
   settings.direct = r.direct;
   settings.tolerance = r.tolerance;
   const Timer timer;
-  HierarchicalRun run = run_hierarchical({"", surfaces, {}}, settings, r.threads);
+  HierarchicalRun run = run_hierarchical({"", surfaces, {}}, settings, threads);
   RecipeResult result;
   for (const RefinementRound& round : run.result.rounds)
     result.form_factor_seconds += round.refine_seconds, result.solve_seconds += round.solve_seconds;
+  result.form_factor_seconds += run.result.balanced.balance_seconds;  // the links' balance is part of making them
+  result.solve_seconds += run.result.balanced.solve_seconds;
   result.direct_seconds = r.exact_direct ? std::max(0.0, timer.seconds() - result.form_factor_seconds -
                                                              result.solve_seconds)
                                          : 0.0;
@@ -99,8 +101,8 @@ RecipeResult hierarchical_recipe(const std::vector<Surface>& surfaces, const Rec
 
 }  // namespace
 
-RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe) {
-  if (recipe.solver == RecipeSolver::Hierarchical) return hierarchical_recipe(surfaces, recipe);
+RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe, int threads) {
+  if (recipe.solver == RecipeSolver::Hierarchical) return hierarchical_recipe(surfaces, recipe, threads);
   RecipeResult result;
   const bool shooting = recipe.solver == RecipeSolver::Progressive;
   if (!shooting && recipe.elements > max_matrix_elements)
@@ -120,13 +122,13 @@ RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& re
   const FormFactorScene receivers(element_shapes(mesh));
   Timer timer;
   RadiositySystem system = make_system(
-      mesh, shooting ? FormFactorMatrix{} : form_factor_matrix(receivers, r.form_factors, r.threads, &result.hemicube));
+      mesh, shooting ? FormFactorMatrix{} : form_factor_matrix(receivers, r.form_factors, threads, &result.hemicube));
   result.form_factor_seconds = timer.seconds();
 
   timer.restart();
   const std::vector<Color> E = system.emission;
   if (r.exact_direct) {
-    result.direct = direct_radiosity(receivers, mesh, r.direct);
+    result.direct = direct_radiosity(receivers, mesh, r.direct, threads);
     system = indirect_system(std::move(system), result.direct);  // moved, not copied: F may be 100s of MB
   }
   result.direct_seconds = r.exact_direct ? timer.seconds() : 0;

@@ -29,10 +29,8 @@ struct Recipe {
   DirectLightSettings direct;
   RecipeSolver solver = RecipeSolver::GaussSeidel;
   double tolerance = 1e-5;  // the solver's (options.tolerance)
-  int threads = 0;
   // RecipeSolver::Hierarchical only: its thresholds. elements, elements_per_side and
-  // form_factors are then unused; exact_direct, direct, tolerance and threads are
-  // handed to it.
+  // form_factors are then unused; exact_direct, direct and tolerance are handed to it.
   HierarchicalSettings hierarchical;
 };
 
@@ -59,11 +57,13 @@ struct RecipeResult {
 // The most elements a matrix solver takes: its n x n matrix of doubles is 3.2 GB at 20 000.
 inline constexpr int max_matrix_elements = 20000;
 
+// The recipe's work (form factors, direct light, hierarchical refinement) is shared
+// among `threads` threads (0 = all cores); the answer is the same for any number.
 // Throws std::invalid_argument for bad settings (as make_mesh, check(FormFactorSettings)
 // and check(DirectLightSettings) do) and for a matrix solver asked for more than
 // max_matrix_elements; asked for up to that, its mesh has about `elements` but never
 // more than max_matrix_elements (patch_size_at_most), checked before any work.
-RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe);
+RecipeResult solve_recipe(const std::vector<Surface>& surfaces, const Recipe& recipe, int threads);
 
 // A receiver whose image is smaller than one hemicube cell gets a whole cell's dF or
 // nothing: its form factor is aliased. A few such receivers average out; when in some row

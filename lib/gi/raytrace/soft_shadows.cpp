@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "gi/core/not_implemented.hpp"
-#include "gi/raytrace/pixel_samplers.hpp"
+#include "gi/render/pixel_samplers.hpp"
 
 namespace gi {
 
@@ -35,7 +35,11 @@ vec3 point_on_light(const QuadLight& light, vec2 uv) {
 std::vector<vec2> light_samples(const SoftShadowSettings& settings, Rng& rng) {
   switch (settings.sampling) {
     case LightSampling::Centre: return {vec2(0.5, 0.5)};
-    case LightSampling::Random: return random_positions(settings.n * settings.n, rng);
+    case LightSampling::Random: {
+      std::vector<vec2> uv;
+      random_positions(settings.n * settings.n, rng, uv);
+      return uv;
+    }
     case LightSampling::Jittered: return jittered_positions(settings.n, rng);
   }
   return {};

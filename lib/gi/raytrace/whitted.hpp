@@ -17,6 +17,9 @@ struct TraceSettings {
   // (scene_scale.hpp; World::scale): 1e-6 scene units at Whitted's scale 16.
   double epsilon = 6.25e-8;
   SoftShadowSettings soft_shadows;  // shadow rays per area light (lesson 04)
+  bool fast_queries = false;        // nearest hits and local shading by the *_fast files
+                                    // (world_fast.hpp, whitted_fast.hpp): the same picture to
+                                    // the byte, sooner
 };
 
 // Whitted's recursive ray tracer. Returns the radiance seen along `ray`:
@@ -26,5 +29,11 @@ struct TraceSettings {
 // places the shadow rays on area lights.
 Color trace(const World& world, const Ray& ray, const TraceSettings& settings, RayCounts& counts, Rng& rng,
             int depth = 0, const Color& contribution = Color(1.0));
+
+// trace()'s local term at `hit`, seen from `to_eye`, with `n` the normal on the viewer's
+// side: emission + k_a I_a + sum_l S_l I_l [k_d N.L + k_s (R.V)^n], each S_l a shadow ray
+// (counted at `depth`), area lights sampled with `rng`.
+Color shade_locally(const World& world, const Hit& hit, const vec3& n, const vec3& to_eye,
+                    const TraceSettings& settings, RayCounts& counts, Rng& rng, int depth);
 
 }  // namespace gi

@@ -38,7 +38,8 @@ std::string num(double v) {  // fixed formatting, independent of the locale
 // very large as 2e-5, 1e6.
 std::string tick_label(double v, bool log) {
   char buffer[32];
-  const int e = static_cast<int>(std::floor(std::log10(std::abs(v)) + 1e-9));
+  // The decade of v; none for 0, whose log is -inf (no int holds it).
+  const int e = v != 0 ? static_cast<int>(std::floor(std::log10(std::abs(v)) + 1e-9)) : 0;
   if (log && (e < -3 || e > 4)) std::snprintf(buffer, sizeof buffer, "%.3ge%d", v / std::pow(10.0, e), e);
   else std::snprintf(buffer, sizeof buffer, "%g", std::abs(v) < 1e-12 ? 0.0 : v);
   return buffer;

@@ -1,8 +1,5 @@
 #include "gi/report/lesson.hpp"
 
-#include <signal.h>
-
-#include <cerrno>
 #include <exception>
 #include <iostream>
 #include <stdexcept>
@@ -10,6 +7,7 @@
 
 #include "gi/core/atomic_file.hpp"
 #include "gi/core/not_implemented.hpp"
+#include "gi/core/platform/process.hpp"
 #include "gi/image/image_io.hpp"
 #include "gi/report/lesson_guide.hpp"
 #include "gi/report/lessons_index.hpp"
@@ -61,7 +59,7 @@ bool abandoned(const fs::path& file) {
   name.erase(name.rfind('.'));  // the counter
   const std::string pid = name.substr(name.rfind('.') + 1);
   if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 9) return false;
-  return ::kill(std::stoi(pid), 0) != 0 && errno == ESRCH;
+  return !platform::process_exists(std::stoll(pid));
 }
 
 Output output(OutputKind kind, const std::string& caption, const fs::path& file) {

@@ -1,12 +1,6 @@
 #include "gi/report/lessons_index.hpp"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <optional>
 #include <nlohmann/json.hpp>
@@ -14,6 +8,7 @@
 #include <vector>
 
 #include "gi/core/atomic_file.hpp"
+#include "gi/core/platform/folder_lock.hpp"
 #include "gi/report/lesson_guide.hpp"
 #include "gi/report/page_assets.hpp"
 #include "gi/report/report_page.hpp"
@@ -81,22 +76,6 @@ std::string status_class(const std::string& status) {
   return "failed";
 }
 
-// An exclusive flock(2) on a folder, held for the object's life.
-class FolderLock {
- public:
-  explicit FolderLock(const fs::path& folder) : fd_(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
-    if (fd_ < 0) throw WriteError("cannot lock " + folder.string() + ": " + std::strerror(errno));
-    while (::flock(fd_, LOCK_EX) != 0)
-      if (errno != EINTR) throw WriteError("cannot lock " + folder.string() + ": " + std::strerror(errno));
-  }
-  ~FolderLock() { ::close(fd_); }  // closing releases the lock
-  FolderLock(const FolderLock&) = delete;
-  FolderLock& operator=(const FolderLock&) = delete;
-
- private:
-  int fd_;
-};
-
 }  // namespace
 
 std::string lessons_index_page(const fs::path& folder) {
@@ -158,7 +137,7 @@ std::string lessons_index_page(const fs::path& folder) {
 }
 
 void update_lessons_index(const fs::path& folder) {
-  const FolderLock lock(folder);
+  const platform::FolderLock lock(folder);
   const std::string page = lessons_index_page(folder);
   write_atomically(folder / "index.html", [&](std::ostream& out) { out << page; });
 }

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 
+#include "gi/core/decimal.hpp"
 #include "gi/core/number_text.hpp"
 #include "gi/report/options.hpp"
 
@@ -24,7 +24,7 @@ std::vector<std::string> split(const std::string& text, char separator) {
 // Decimal text first (number_text.hpp): the grammar, not the converter, says what is a number.
 double number(const std::string& text, const std::string& what) {
   double v = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+  const auto [end, error] = read_decimal(text.data(), text.data() + text.size(), v);
   if (!is_real_number_text(text) || error != std::errc() || end != text.data() + text.size())
     throw OptionError(what + ": expected a decimal number such as 2, -0.5 or 1e-3, got '" + quoted_text(text) + "'");
   if (const RealProblem problem = real_problem(v); problem != RealProblem::None)

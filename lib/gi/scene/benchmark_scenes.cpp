@@ -57,7 +57,11 @@ Scene random_spheres(int count, std::uint64_t seed) {
   const double radius = side * std::cbrt(3.0 * fill / (4.0 * pi * count));
   Rng rng(seed);
   for (int i = 0; i < count; ++i) {
-    const vec3 centre = side * vec3(rng.uniform(), rng.uniform(), rng.uniform()) - 0.5 * side;
+    // Drawn one at a time, z first: the arguments of one call would come in an order
+    // of the compiler's choosing (GCC's was z, y, x; Clang's x, y, z), and the scene
+    // would depend on the compiler.
+    const double z = rng.uniform(), y = rng.uniform(), x = rng.uniform();
+    const vec3 centre = side * vec3(x, y, z) - 0.5 * side;
     s.add(Sphere{centre, radius, static_cast<int>(rng.below(4))});
   }
   s.add(PointLight{{10, 15, 15}, Color(0.9)});

@@ -1,9 +1,9 @@
 #include "gi/scene/json.hpp"
 
 #include <cctype>
-#include <charconv>
 #include <cmath>
 
+#include "gi/core/decimal.hpp"
 #include "gi/core/number_text.hpp"
 #include "gi/scene/utf8.hpp"
 
@@ -227,7 +227,7 @@ class Parser {
     }
     const std::string_view token = text_.substr(start, pos_ - start);
     double v = 0;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), v);
+    const auto [end, error] = read_decimal(token.data(), token.data() + token.size(), v);
     if (error == std::errc::result_out_of_range || (error == std::errc() && !std::isfinite(v)))
       throw SceneError({file_, line_, column_ - static_cast<int>(token.size()), ""},
                        "the number " + std::string(token.substr(0, 40)) + " is out of the range of a double");

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <unordered_map>
 
+#include "gi/core/decimal.hpp"
 #include "gi/core/number_text.hpp"
 #include "gi/scene/json.hpp"
 #include "gi/scene/utf8.hpp"
@@ -101,7 +102,7 @@ class ObjReader {
   // Decimal text first (number_text.hpp): the grammar, not the converter, says what is a number.
   double number(const Word& w) const {
     double v = 0;
-    const auto [end, error] = std::from_chars(w.text.data(), w.text.data() + w.text.size(), v);
+    const auto [end, error] = read_decimal(w.text.data(), w.text.data() + w.text.size(), v);
     if (!is_real_number_text(w.text) || error != std::errc() || end != w.text.data() + w.text.size() ||
         !std::isfinite(v))
       fail(w.column, "v", "expected a number, got '" + std::string(w.text.substr(0, 40)) + "'");

@@ -28,7 +28,8 @@ Color final_gather(const EyeWorld& eye, const RadiosityHandoff& handoff, const v
   Color sum(0.0);
   // BEGIN EXERCISE 16.2 the final-gather estimate
   for (int k = 0; k < rays; ++k) {
-    const vec2 u((k % strata + rng.uniform()) / strata, (k / strata + rng.uniform()) / strata);
+    const double v = rng.uniform(), u0 = rng.uniform();  // one at a time, v first, whatever the compiler
+    const vec2 u((k % strata + u0) / strata, (k / strata + v) / strata);
     const vec3 w = frame.to_world(sample_cosine_hemisphere(u));
     const Ray gather{x, w};
     const auto y = first_hit(eye, gather);

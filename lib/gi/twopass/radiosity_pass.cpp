@@ -16,11 +16,12 @@ namespace {
 // D_i = rho_i (1/A_i) integral over element i of H(x) dx, by strata^2 jittered points
 // of its bilinear map, each weighted by the map's area element (so a trapezoid's wide
 // end counts for more).
-std::vector<Color> direct_by_shadow_rays(const Mesh& mesh, const EyeWorld& eye, const RadiosityPassSettings& s) {
+std::vector<Color> direct_by_shadow_rays(const Mesh& mesh, const EyeWorld& eye, const RadiosityPassSettings& s,
+                                         int threads) {
   const ShadowRayLights lights = shadow_ray_lights(mesh, s.light_cells);
   const int m = s.receiver_strata;
   std::vector<Color> D(mesh.elements.size());
-  parallel_for(static_cast<int>(mesh.elements.size()), s.threads, [&](int i) {
+  parallel_for(static_cast<int>(mesh.elements.size()), threads, [&](int i) {
     const Element& e = mesh.elements[i];
     const auto& c = e.shape.corners;
     Rng rng(s.seed, static_cast<std::uint64_t>(i));
@@ -42,7 +43,7 @@ std::vector<Color> direct_by_shadow_rays(const Mesh& mesh, const EyeWorld& eye, 
 
 }  // namespace
 
-RadiosityPass radiosity_pass(const TwoPassScene& scene, const RadiosityPassSettings& settings) {
+RadiosityPass radiosity_pass(const TwoPassScene& scene, const RadiosityPassSettings& settings, int threads) {
   if (settings.receiver_strata < 1 || settings.receiver_strata > 16)
     throw std::invalid_argument("radiosity pass: receiver strata must lie in [1, 16]");
   if (!(settings.tolerance > 0)) throw std::invalid_argument("radiosity pass: the tolerance must be positive");
@@ -56,7 +57,7 @@ RadiosityPass radiosity_pass(const TwoPassScene& scene, const RadiosityPassSetti
 
   Timer timer;
   const EyeWorld eye = make_eye_world(mesh, scene.spheres);
-  std::vector<Color> D = direct_by_shadow_rays(mesh, eye, settings);
+  std::vector<Color> D = direct_by_shadow_rays(mesh, eye, settings, threads);
   pass.direct_seconds = timer.seconds();
 
   timer.restart();

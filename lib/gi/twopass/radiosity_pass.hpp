@@ -25,7 +25,6 @@ struct RadiosityPassSettings {
   int receiver_strata = 2;    // D: strata^2 jittered points per element
   FormFactorSettings form_factors;  // the interreflection's; hemicube_resolution 0: from the mesh
   double tolerance = 1e-4;    // progressive refinement's, on the unshot energy
-  int threads = 0;
   std::uint64_t seed = 1;     // element i's points draw from stream i
 };
 
@@ -38,7 +37,8 @@ struct RadiosityPass {
   double seconds() const { return direct_seconds + solve_seconds; }
 };
 
+// D is shared among `threads` threads (0 = all cores): the same for any number.
 // Throws std::invalid_argument for bad settings or a bad scene (make_mesh's messages).
-RadiosityPass radiosity_pass(const TwoPassScene& scene, const RadiosityPassSettings& settings);
+RadiosityPass radiosity_pass(const TwoPassScene& scene, const RadiosityPassSettings& settings, int threads);
 
 }  // namespace gi

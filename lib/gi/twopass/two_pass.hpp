@@ -4,6 +4,9 @@
 #include <vector>
 
 #include "gi/image/image.hpp"
+#include "gi/render/render_pass.hpp"
+#include "gi/twopass/eye_world.hpp"
+#include "gi/twopass/shadow_rays.hpp"
 #include "gi/twopass/handoff.hpp"
 #include "gi/twopass/two_pass_scene.hpp"
 
@@ -31,20 +34,39 @@ std::string name(IndirectLight indirect);  // "ambient", "mesh", "final gather"
 
 struct TwoPassSettings {
   int width = 128, height = 128;
-  int samples = 2;         // n x n jittered eye rays per pixel, box filter (1..16)
+  int samples = 2;         // n x n jittered eye rays per pixel, box filter (1..16): render_pass's Jittered
   IndirectLight indirect = IndirectLight::FinalGather;
   int light_cells = 2;     // cells^2 shadow rays per light at every diffuse hit (1..64)
   int gather_strata = 6;   // FinalGather: strata^2 rays at every diffuse hit (1..64)
   int max_depth = 8;       // specular bounces (0..64)
-  int threads = 0;
-  std::uint64_t seed = 1;  // pixel (x, y) draws from stream y * width + x: the same bytes for any thread count
 };
 void check(const TwoPassSettings& settings);  // throws std::invalid_argument
 
 // H_a above, from the mesh's surfaces.
 Color ambient_irradiance(const Mesh& mesh);
 
-// The picture, linear radiance per pixel. The hand-off must be of `scene`'s surfaces.
-Image render_two_pass(const TwoPassScene& scene, const RadiosityHandoff& handoff, const TwoPassSettings& settings);
+// The eye pass as a radiance function (render_pass.hpp): the radiance arriving along an
+// eye ray, by the rules above; its shadow rays and gather rays draw from the pixel's
+// stream. The hand-off must be of `scene`'s surfaces, and outlive it.
+class EyePass {
+ public:
+  EyePass(const TwoPassScene& scene, const RadiosityHandoff& handoff, const TwoPassSettings& settings);
+  Color operator()(const Ray& ray, PixelSample& sample) const { return radiance(ray, 0, sample.rng); }
+
+ private:
+  Color radiance(const Ray& ray, int depth, Rng& rng) const;
+  Color specular(const Ray& ray, const EyeHit& hit, int depth, Rng& rng) const;
+
+  const RadiosityHandoff& handoff_;
+  TwoPassSettings settings_;
+  EyeWorld eye_;
+  ShadowRayLights lights_;
+  Color ambient_;
+};
+
+// The picture, linear radiance per pixel: the eye pass through every pixel, pixel i
+// drawing from stream i of `seed`, on `threads` threads (the same bytes for any count).
+Image render_two_pass(const TwoPassScene& scene, const RadiosityHandoff& handoff, const TwoPassSettings& settings,
+                      std::uint64_t seed, int threads);
 
 }  // namespace gi

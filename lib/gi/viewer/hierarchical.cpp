@@ -14,14 +14,14 @@ ViewerHierarchy hierarchy_of(const HierarchicalRun& run, const LeafMesh& leaves)
                         ? "light that has bounced at least once: the direct light D is exact (shadow rays to the "
                           "light), not a link's; B = E + D + what the links bring"
                         : "all the light: B = E + what the links bring";
-  std::vector<Color> B;
-  B.reserve(h.nodes.size());
+  std::vector<Color> sent;
+  sent.reserve(h.nodes.size());
   for (const Node& node : h.nodes) {
     out.node_surface.push_back(node.surface);
     out.node_level.push_back(node.level);
     out.node_parent.push_back(node.parent);
     out.node_corners.push_back(node.shape.corners);
-    B.push_back(node.B);
+    sent.push_back(node.sent);
   }
   // One link at a time, as gather() weighs it, with rho = 1: the light before rho.
   Node alone;
@@ -30,7 +30,7 @@ ViewerHierarchy hierarchy_of(const HierarchicalRun& run, const LeafMesh& leaves)
   for (const Node& node : h.nodes)
     for (const Link& link : node.links) {
       alone.links[0] = link;
-      out.links.push_back({link.receiver, link.source, link.F, link.visibility, gather(h, alone, B)});
+      out.links.push_back({link.receiver, link.source, link.F, link.visibility, gather(h, alone, sent)});
     }
   out.element_node = leaves.node;
   for (int leaf : leaves.node) {

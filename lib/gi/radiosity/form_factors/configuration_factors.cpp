@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "gi/radiosity/form_factors/quadrature.hpp"
 

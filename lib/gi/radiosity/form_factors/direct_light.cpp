@@ -14,11 +14,10 @@ void check(const DirectLightSettings& s) {
   if (s.receiver_points < 1 || s.receiver_points > 8)
     throw std::invalid_argument("direct light: receiver points must lie in [1, 8], got " +
                                 std::to_string(s.receiver_points));
-  if (s.threads < 0) throw std::invalid_argument("direct light: threads must be 0 (all cores) or more");
 }
 
 DirectLighting::DirectLighting(const Mesh& mesh, int cells) {
-  check(DirectLightSettings{cells, 1, 0});
+  check(DirectLightSettings{cells, 1});
   for (const Surface& s : mesh.surfaces) {
     if (max_component(s.emission) <= 0) continue;
     Light light{make_polygon(s.corners), s.emission, {}};
@@ -84,13 +83,13 @@ Color direct_radiosity(const DirectLighting& lights, const FormFactorScene& scen
 }
 
 std::vector<Color> direct_radiosity(const FormFactorScene& scene, const Mesh& mesh,
-                                    const DirectLightSettings& settings) {
+                                    const DirectLightSettings& settings, int threads) {
   check(settings);
   if (scene.polygons().size() != mesh.elements.size())
     throw std::invalid_argument("direct light: the scene must be built from the mesh's elements");
   const DirectLighting lights(mesh, settings.light_cells);
   std::vector<Color> D(mesh.elements.size(), Color(0.0));
-  parallel_for(static_cast<int>(mesh.elements.size()), settings.threads, [&](int i) {
+  parallel_for(static_cast<int>(mesh.elements.size()), threads, [&](int i) {
     const Element& e = mesh.elements[i];
     D[i] = direct_radiosity(lights, scene, e.shape, mesh.reflectance(e), settings.receiver_points);
   });

@@ -27,7 +27,6 @@ namespace gi {
 struct DirectLightSettings {
   int light_cells = 8;      // each light cut into cells x cells strata for the shadow rays (1..64)
   int receiver_points = 2;  // n x n Gauss-Legendre points per element (1..8)
-  int threads = 0;          // 0 = all cores; the result is the same for any number
 };
 void check(const DirectLightSettings& settings);  // throws std::invalid_argument
 
@@ -53,10 +52,11 @@ class DirectLighting {
   std::vector<Light> lights_;
 };
 
-// D_i for every element of `mesh` (lights are the surfaces with emission E > 0).
-// `scene` must be built from element_shapes(mesh): it casts the shadow rays.
+// D_i for every element of `mesh` (lights are the surfaces with emission E > 0), on
+// `threads` threads (0 = all cores): the same for any number. `scene` must be built
+// from element_shapes(mesh): it casts the shadow rays.
 std::vector<Color> direct_radiosity(const FormFactorScene& scene, const Mesh& mesh,
-                                    const DirectLightSettings& settings);
+                                    const DirectLightSettings& settings, int threads);
 
 // D of one polygon of reflectance rho, at points x points (1..8): what the function
 // above does for each element, here for any piece of a surface (hierarchical

@@ -26,9 +26,13 @@ int whole_root(int n) {
 // over its own region, the regions of the grid cover the square equally, and the
 // estimate is unbiased; wrapping the leftovers into the first cells instead (as this
 // code once did) counts those cells twice.
+// The two numbers are drawn one at a time, v first: as one call's arguments they would
+// come in an order of the compiler's choosing (GCC's was v, u), and so would the form
+// factors.
 vec2 stratified(int k, int n, Rng& rng) {
-  if (k < n * n) return vec2(((k % n) + rng.uniform()) / n, ((k / n) + rng.uniform()) / n);
-  return vec2(rng.uniform(), rng.uniform());
+  const double v = rng.uniform(), u = rng.uniform();
+  if (k < n * n) return vec2(((k % n) + u) / n, ((k / n) + v) / n);
+  return vec2(u, v);
 }
 
 // A uniformly distributed point of the convex quadrilateral q (flat): one of its two

@@ -29,8 +29,8 @@ SolverResult relight(HierarchicalRun& run, const std::vector<Color>& emission, d
   for (std::size_t s = 0; s < emission.size(); ++s) h.surfaces[s].emission = emission[s];
   h.largest_emission = 0;
   for (Node& node : h.nodes) {
-    node.E = node.B = emission[node.surface];
-    h.largest_emission = std::max(h.largest_emission, max_component(node.E));
+    node.source = node.B = emission[node.surface];
+    h.largest_emission = std::max(h.largest_emission, max_component(node.source));
   }
   SolverOptions options;
   options.tolerance = tolerance;
@@ -47,13 +47,15 @@ std::vector<Color> shown_radiosity(const HierarchicalRun& run) {
   return B;
 }
 
-LeafPicture render_leaves(const HierarchicalRun& run, const Camera& camera, const DisplaySettings& settings) {
+LeafPicture render_leaves(const HierarchicalRun& run, const Camera& camera, const DisplaySettings& settings,
+                          std::uint64_t seed, int threads) {
   const LeafMesh leaves = leaf_mesh(run.hierarchy);
   const std::vector<Color> B = shown_radiosity(run);
   const FormFactorScene shapes(element_shapes(leaves.mesh));
-  LeafPicture out{render_radiosity_picture(shapes, leaves.mesh, B, leaf_vertex_radiosity(leaves, B), camera, settings),
+  LeafPicture out{render_radiosity_picture(shapes, leaves.mesh, B, leaf_vertex_radiosity(leaves, B), camera, settings,
+                                           seed, threads),
                   {}};
-  const std::vector<int> ids = visible_polygons(shapes, camera, settings.width, settings.height, settings.threads);
+  const std::vector<int> ids = visible_polygons(shapes, camera, settings.width, settings.height, threads);
   out.with_mesh = draw_mesh_lines(out.picture.shown, ids, Color(0.0), 0.6);
   return out;
 }

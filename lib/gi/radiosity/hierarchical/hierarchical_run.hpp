@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "gi/radiosity/display/display.hpp"
@@ -34,11 +35,13 @@ SolverResult relight(HierarchicalRun& run, const std::vector<Color>& emission, d
 std::vector<Color> shown_radiosity(const HierarchicalRun& run);
 
 // The leaves shaded with their vertex colours (leaf_mesh.hpp: no T-vertex cracks),
-// and the same picture with the leaves' outlines drawn over it.
+// and the same picture with the leaves' outlines drawn over it; pixel i's eye rays draw
+// from stream i of `seed`, on `threads` threads.
 struct LeafPicture {
   RadiosityPicture picture;
   Image with_mesh;  // `shown` with the leaf mesh in dark lines
 };
-LeafPicture render_leaves(const HierarchicalRun& run, const Camera& camera, const DisplaySettings& settings);
+LeafPicture render_leaves(const HierarchicalRun& run, const Camera& camera, const DisplaySettings& settings,
+                          std::uint64_t seed, int threads);
 
 }  // namespace gi

@@ -16,12 +16,12 @@ Hierarchy make_hierarchy(const std::vector<Surface>& surfaces) {
     root.shape = mesh.elements[s].shape;
     root.surface = static_cast<int>(s);
     root.rho = surfaces[s].reflectance;
-    root.E = root.B = surfaces[s].emission;
+    root.source = root.B = root.sent = surfaces[s].emission;
     root.open_area = root.shape.area;
     h.nodes.push_back(root);
     h.lifts.push_back(lift(root.shape));
     h.total_area += root.shape.area;
-    h.largest_emission = std::max(h.largest_emission, max_component(root.E));
+    h.largest_emission = std::max(h.largest_emission, max_component(root.source));
   }
   return h;
 }
@@ -42,7 +42,7 @@ void split(Hierarchy& h, int index) {
     child.i = 2 * parent.i + (k & 1);
     child.j = 2 * parent.j + (k >> 1);
     child.parent = index;
-    child.rho = parent.rho, child.E = parent.E, child.B = parent.B;
+    child.rho = parent.rho, child.source = parent.source, child.B = parent.B, child.sent = parent.sent;
     const double scale = 1.0 / static_cast<double>(1LL << child.level);
     const std::array<vec3, 4>& c = h.surfaces[child.surface].corners;
     const double s0 = child.i * scale, s1 = (child.i + 1) * scale, t0 = child.j * scale, t1 = (child.j + 1) * scale;

@@ -25,11 +25,21 @@ struct Node {
   int parent = -1;
   // Children (2i, 2j), (2i + 1, 2j), (2i, 2j + 1), (2i + 1, 2j + 1) at level + 1; -1: a leaf.
   std::array<int, 4> children{-1, -1, -1, -1};
-  Color rho{0.0}, E{0.0};  // its surface's reflectance and emission (W/m^2)
+  Color rho{0.0};  // its surface's reflectance
+  // The source term of the equation solved at a leaf, B = source + gather_scale * (what
+  // its links and its ancestors' bring, times rho): its surface's emission E (W/m^2), or
+  // with exact direct light (hierarchical_solver.hpp) D, the direct light it reflects.
+  Color source{0.0};
   // At a leaf, its radiosity; above, the area-weighted mean of its children's (push-pull).
   Color B{0.0};
+  // What its links carry away from it: at a leaf B times send_scale, above the
+  // area-weighted mean of its children's (hierarchical_solver.cpp's pull_sent).
+  Color sent{0.0};
   // rho times what its own links bring in, before push-pull hands it to its leaves.
   Color gathered{0.0};
+  // A leaf's two balance factors (balance.hpp), 1 until the links are balanced: what
+  // reaches the leaf is multiplied by gather_scale, what it sends by send_scale.
+  double gather_scale = 1, send_scale = 1;
   std::vector<Link> links;  // the links it receives over
   // Its open part, what is not buried inside a solid (exposure.hpp): a bit per cell of
   // a 4 x 4 grid, and an area (a leaf's share of open cells times its area, above that
@@ -49,11 +59,11 @@ struct Hierarchy {
   std::vector<double> lifts;  // lift(surface s's polygon), polygon.hpp: for lifted_point, at every shadow ray's ends
 };
 
-// One root per surface, every B = E, no links. Throws std::invalid_argument for a bad
+// One root per surface, every B = source = E, no links. Throws std::invalid_argument for a bad
 // surface or two that overlap in one plane (the checks of make_mesh).
 Hierarchy make_hierarchy(const std::vector<Surface>& surfaces);
 
-// Cuts leaf `node` into four: the children get its surface, rho, E and its B (the best
+// Cuts leaf `node` into four: the children get its surface, rho, source and its B (the best
 // guess until a solve). Appends to nodes, so references into it become invalid.
 // Throws std::invalid_argument for a node that is not a leaf.
 void split(Hierarchy& hierarchy, int node);

@@ -35,7 +35,9 @@ inline constexpr double near_spread = 1.5;
 inline constexpr int gather_rays_per_side = 2;
 
 // light_l = F_l V_l B_q: what link l hands its receiver, before rho (push_pull.hpp's
-// gather, by the source's quarters where it has children).
+// gather, by the source's quarters where it has children), with the sources' own B --
+// the solution -- not what balanced links send (balance.hpp): the gather takes F at the
+// point, so the sums the balance mends are not the ones it reads.
 Color link_light(const Hierarchy& hierarchy, const Link& link);
 
 class LinkGather {

@@ -4,6 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "gi/core/not_implemented.hpp"
+
 namespace gi {
 
 RadiositySystem make_system(const Mesh& mesh, FormFactorMatrix F) {
@@ -38,6 +40,7 @@ Color power(const std::vector<double>& area, const std::vector<Color>& B) {
 
 SpectralRadius spectral_radius(const RadiositySystem& s, int channel, double tolerance, int max_iterations) {
   if (channel < 0 || channel > 2) throw std::invalid_argument("spectral radius: the channel must be 0, 1 or 2");
+  // BEGIN EXERCISE 12.1 the spectral radius by power iteration
   const int n = s.size();
   std::vector<double> x(n, 1.0), y(n);
   SpectralRadius result;
@@ -58,6 +61,7 @@ SpectralRadius spectral_radius(const RadiositySystem& s, int channel, double tol
     for (int i = 0; i < n; ++i) x[i] = y[i] / top;
   }
   return result;
+  // END EXERCISE 12.1
 }
 
 }  // namespace gi
