@@ -78,7 +78,7 @@ TEST(Recipe, AMatrixSolverPastItsLimitIsRefusedAtOnce) {
   gi::Recipe recipe;
   recipe.elements = gi::max_matrix_elements + 1;
   try {
-    (void)gi::solve_recipe(gi::cornell_box().surfaces, recipe);
+    (void)gi::solve_recipe(gi::cornell_box().surfaces, recipe, 0);
     FAIL() << "accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "solve_recipe: 20001 elements is too many for a stored matrix (at most 20000)");

@@ -14,14 +14,15 @@
 #include <string>
 #include <vector>
 
-#include "gi/pathtrace/film.hpp"
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
+#include "gi/pathtrace/path_trace.hpp"
 #include "gi/radiosity/display/display.hpp"
 #include "gi/radiosity/form_factors/form_factor_hemicube.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/system/solvers.hpp"
 #include "gi/raytrace/render.hpp"
+#include "gi/render/film.hpp"
 #include "gi/scene/builtin_scenes.hpp"
 #include "gi/scene/soft_shadow_scene.hpp"
 #include "gi/twopass/radiosity_pass.hpp"
@@ -111,8 +112,8 @@ void expect_scale_free(const std::string& what, Draw draw, double rms, double sh
 }
 
 gi::Image whitted(const gi::Scene& scene, gi::RenderSettings settings) {
-  settings.width = 64, settings.height = 48, settings.threads = 2;
-  return gi::render(gi::make_world(scene), settings).image;
+  settings.width = 64, settings.height = 48;
+  return gi::render(gi::make_world(scene), settings, 1, 2).image;
 }
 
 }  // namespace
@@ -154,8 +155,9 @@ TEST(ScaleInvariance, Radiosity) {
         gi::make_system(mesh, gi::form_factor_matrix_hemicube(gi::element_shapes(mesh), 50, 2));
     const gi::FormFactorScene receivers(gi::element_shapes(mesh));
     gi::DisplaySettings display;
-    display.width = 48, display.height = 48, display.threads = 2;
-    return gi::render_radiosity(receivers, mesh, gi::solve_direct(system).B, scaled(box.camera, k), display);
+    display.width = 48, display.height = 48;
+    return gi::render_radiosity_picture(receivers, mesh, gi::solve_direct(system).B, scaled(box.camera, k), display, 1, 2)
+        .radiance;
   };
   expect_scale_free("08 cornell", draw, 1e-5, 0.0);
 }
@@ -165,7 +167,7 @@ TEST(ScaleInvariance, PathTracing) {
   const auto draw = [](double k) {
     const gi::PathScene scene = gi::make_path_scene(scaled(gi::make_path_scene_by_name("cornell-spheres"), k));
     gi::Film film = gi::make_film(32, 32, 7);
-    gi::render_pass(film, scene, {}, 4, 2);
+    gi::path_trace(film, scene, {}, 4, 2);
     return gi::film_mean(film);
   };
   expect_scale_free("14 cornell-spheres", draw, 1e-5, 0.0);
@@ -180,11 +182,11 @@ TEST(ScaleInvariance, TwoPass) {
     for (gi::SpecularSphere& s : scene.spheres) s.shape.center *= k, s.shape.radius *= k;
     scene.camera = scaled(scene.camera, k);
     gi::RadiosityPassSettings radiosity;
-    radiosity.elements = 150, radiosity.threads = 2;
+    radiosity.elements = 150;
     radiosity.form_factors.hemicube_resolution = 50;
     gi::TwoPassSettings eye;
-    eye.width = eye.height = 32, eye.samples = 1, eye.gather_strata = 2, eye.threads = 2;
-    return gi::render_two_pass(scene, gi::radiosity_pass(scene, radiosity).handoff, eye);
+    eye.width = eye.height = 32, eye.samples = 1, eye.gather_strata = 2;
+    return gi::render_two_pass(scene, gi::radiosity_pass(scene, radiosity, 2).handoff, eye, 1, 2);
   };
   expect_scale_free("16 cornell-spheres", draw, 1e-5, 0.0);
 }
