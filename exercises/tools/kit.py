@@ -230,6 +230,13 @@ def stop(signum, frame):
     raise Interrupted(signal.Signals(signum).name)
 
 
+def ignore_signals():
+    """From here on a signal cannot interrupt: the kit is whole, or its copy is being removed."""
+    for name in signals_held.NAMES:
+        if hasattr(signal, name):
+            signal.signal(getattr(signal, name), signal.SIG_IGN)
+
+
 def main(argv):
     for name in signals_held.NAMES:  # each cleans the partial copy up on its way out
         if hasattr(signal, name):
@@ -241,13 +248,13 @@ def main(argv):
     try:
         args = parser.parse_args(argv)
         punched = make_kit(ROOT, args.dest, args.labs, args.force)
+        ignore_signals()  # the kit is in place: a signal now must not say it was not made
     except (KitError, regions.RegionError) as e:
+        ignore_signals()
         print(f"make-kit: error: {e}", file=sys.stderr)
         return 2 if isinstance(e, UsageError) else 1
     except (KeyboardInterrupt, Interrupted):
-        for name in signals_held.NAMES:
-            if hasattr(signal, name):
-                signal.signal(getattr(signal, name), signal.SIG_IGN)
+        ignore_signals()
         print("make-kit: interrupted; no kit was made", file=sys.stderr)
         return 130
     for lab in sorted({r.lab for r in punched}):
@@ -258,4 +265,12 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    # A signal that comes as main returns ends the run as one during it would: one
+    # line, status 130, never a traceback from the exit.
+    try:
+        status = main(sys.argv[1:])
+    except (KeyboardInterrupt, Interrupted):
+        ignore_signals()
+        print("make-kit: interrupted; no kit was made", file=sys.stderr)
+        status = 130
+    sys.exit(status)

@@ -155,6 +155,30 @@ class Destinations(unittest.TestCase):
                     left = sorted(p.name for p in Path(tmp).iterdir())
                     self.assertIn(left, ([], ["kit"]), f"{sig.name} after {delay} s left {left}")
 
+    def test_a_signal_as_it_ends_says_one_true_thing(self):
+        # Timed from a run's own length, so that some signals land as the kit is done:
+        # then the new kit is whole and said to be (status 0), or the run says it made
+        # none (130) and the kit made before it stays as it was, with no partial copy.
+        with tempfile.TemporaryDirectory() as tmp:
+            start = time.monotonic()
+            self.assertEqual(self.make_kit(f"{tmp}/kit", "--labs", "1", "--force").returncode, 0)
+            length = time.monotonic() - start
+            for fraction in (0.9, 0.95, 0.98, 1.0, 1.02):
+                run = subprocess.Popen(MAKE_KIT + [f"{tmp}/kit", "--labs", "1", "--force"],
+                                       stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                time.sleep(length * fraction)
+                run.send_signal(signal.SIGTERM)
+                out, err = run.communicate(timeout=120)
+                self.assertNotIn("Traceback", err)
+                if run.returncode == 0:
+                    self.assertIn("kit written to", out)
+                    self.assertTrue((Path(tmp) / "kit" / "exercises" / "KIT").is_file())
+                else:
+                    self.assertEqual(run.returncode, 130, err)
+                    self.assertEqual(err.strip().splitlines(), ["make-kit: interrupted; no kit was made"])
+                    self.assertEqual(sorted(p.name for p in Path(tmp).iterdir()), ["kit"])
+                    self.assertTrue((Path(tmp) / "kit" / "exercises" / "KIT").is_file())
+
     def test_killed_runs_never_leave_a_kit_with_solutions(self):
         with tempfile.TemporaryDirectory() as tmp:
             dest = Path(tmp) / "kit"
