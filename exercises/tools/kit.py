@@ -162,10 +162,14 @@ def move_into_place(temp, dest):
         return
     if not is_kit(dest):  # it changed while the kit was written: leave it alone
         raise KitError(f"{dest} is no longer a kit; no kit was made")
-    old = Path(tempfile.mkdtemp(prefix=f".{dest.name}.old-", dir=dest.parent))
-    os.rename(dest, old / "kit")
-    os.rename(temp, dest)
-    shutil.rmtree(old, ignore_errors=True)
+    # From the old kit's rename to its removal no signal may stop the switch halfway:
+    # the new kit is then in place and the old one beside it, and the run would say
+    # it made none.
+    with signals_held():
+        old = Path(tempfile.mkdtemp(prefix=f".{dest.name}.old-", dir=dest.parent))
+        os.rename(dest, old / "kit")
+        os.rename(temp, dest)
+        shutil.rmtree(old, ignore_errors=True)
 
 
 def make_kit(root, dest, labs_spec, force=False):
@@ -187,6 +191,9 @@ def make_kit(root, dest, labs_spec, force=False):
             dest.parent.mkdir(parents=True, exist_ok=True)
             for stale in dest.parent.glob(f".{dest.name}.partial-*"):  # left by a run that was killed
                 if (stale / PARTIAL_MARK).is_file() and not stale.is_symlink():
+                    shutil.rmtree(stale, ignore_errors=True)
+            for stale in dest.parent.glob(f".{dest.name}.old-*"):  # a replaced kit a kill -9 left
+                if not stale.is_symlink() and is_kit(stale / "kit"):
                     shutil.rmtree(stale, ignore_errors=True)
             temp = Path(tempfile.mkdtemp(prefix=f".{dest.name}.partial-", dir=dest.parent))
             (temp / PARTIAL_MARK).write_text("a kit being written by make-kit; removed when it is done\n")
