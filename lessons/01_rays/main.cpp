@@ -1,6 +1,7 @@
 // Lesson 01 -- rays: where does a ray meet a sphere, where a plane?
 // Prints worked cases (tangent rays, rays starting inside, parallel rays ...)
-// and draws what eye rays see: hit or miss, the surface normal, the distance.
+// and draws what eye rays see: which surface each hits first, the surface normal,
+// the distance.
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -10,6 +11,7 @@
 #include "gi/geometry/plane.hpp"
 #include "gi/geometry/sphere.hpp"
 #include "gi/image/diff.hpp"
+#include "gi/image/image_io.hpp"
 #include "gi/raytrace/render.hpp"
 #include "gi/report/lesson.hpp"
 #include "gi/report/table.hpp"
@@ -25,6 +27,16 @@ std::string text(const gi::vec3& v) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "(%.3g, %.3g, %.3g)", v.x, v.y, v.z);
   return buffer;
+}
+
+// One flat colour per material, so that the picture shows which surface each eye ray
+// meets first (an item buffer): the Okabe-Ito colours, told apart with any colour
+// vision, as linear values that the PNG's sRGB encoding turns back into them.
+gi::Pixel surface_colour(int material) {
+  static const int palette[] = {0xE69F00, 0x56B4E9, 0x009E73, 0xF0E442, 0x0072B2, 0xD55E00, 0xCC79A7, 0x999999};
+  const int rgb = palette[material % 8];
+  const auto channel = [&](int shift) { return gi::from_srgb8(static_cast<std::uint8_t>((rgb >> shift) & 0xFF)); };
+  return gi::Pixel(channel(16), channel(8), channel(0));
 }
 
 // One row per case: the ray, and what the intersection routine answers.
@@ -44,7 +56,7 @@ gi::Table worked_cases(const std::string& title, const Shape& shape, const std::
 // The three pictures of what the eye rays hit.
 void draw_eye_rays(const gi::World& world, int width, int height, gi::Lesson& lesson) {
   const gi::CameraFrame frame = gi::camera_frame(world.scene.camera, width, height);
-  gi::Image hit_or_miss(width, height), normals(width, height);
+  gi::Image first_hit(width, height), normals(width, height);
   std::vector<double> distance(static_cast<std::size_t>(width) * height, 0.0);
   // Depth in false colour: red near the eye through yellow, green and blue to black
   // at twice the distance to the point the camera looks at, and for misses.
@@ -53,13 +65,14 @@ void draw_eye_rays(const gi::World& world, int width, int height, gi::Lesson& le
     for (int x = 0; x < width; ++x) {
       const auto hit = gi::closest_hit(world, gi::primary_ray(frame, x + 0.5, y + 0.5));
       if (!hit) continue;
-      hit_or_miss.at(x, y) = gi::Pixel(1);
+      first_hit.at(x, y) = surface_colour(hit->material);
       normals.at(x, y) = gi::Pixel(0.5 * hit->normal + 0.5);  // [-1, 1] -> [0, 1] per axis
       distance[static_cast<std::size_t>(y) * width + x] = std::max(0.0, 1.0 - hit->t / far);
     }
   });
   const gi::View view{world.scene.camera, width, height, gi::describe_pixel_samples({})};
-  lesson.picture(hit_or_miss, "hit_or_miss", "white where an eye ray hits something", view);
+  lesson.diagram(first_hit, "first_hit",
+                 "the surface each eye ray hits first, one colour per material; black where it misses");
   lesson.picture(normals, "normals", "the surface normal n as the colour 0.5 n + 0.5", view);
   lesson.diagram(gi::false_colour(distance, width, height, 0.0, 1.0), "depth",
                  "distance to the hit in false colour, red near, black at twice the distance to look_at",
@@ -103,6 +116,6 @@ int main(int argc, char** argv) {
 
     const gi::World world = gi::make_world(scene, gi::acceleration_from_name(accel));
     draw_eye_rays(world, width, height, lesson);
-    lesson.say("\nimages: " + lesson.out().string() + "/{hit_or_miss,normals,depth}.png");
+    lesson.say("\nimages: " + lesson.out().string() + "/{first_hit,normals,depth}.png");
   });
 }
