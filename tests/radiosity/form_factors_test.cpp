@@ -8,6 +8,7 @@
 #include "gi/radiosity/form_factors/form_factor_hemicube.hpp"
 #include "gi/radiosity/mesh/mesh.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
+#include "gi/radiosity/system/form_factor_matrix.hpp"
 
 using gi::vec3;
 
@@ -190,4 +191,51 @@ TEST(FormFactors, HemicubeSeesTheBlocker) {
   EXPECT_LT(seen, 0.5 * unblocked);       // the blocker hides the middle of the view
   EXPECT_NEAR(hemicube(occluded, 0, 3, 200), 0.0, 1e-12);  // its top faces away from the bottom
   EXPECT_GT(hemicube(occluded, 0, 2, 200), 0.0);            // its underside is what the bottom sees
+}
+
+// The face-to-face factors of a closed unit cube, from its elements: 4 x 4 to a face,
+// each pair's factor by the area-to-area quadrature. Opposite faces never share an
+// edge, so their pairs are smooth and the grouped factor is the closed form's to
+// round-off; adjacent faces meet at an edge where the quadrature converges slowly.
+// Rows keep their sums, and a reciprocal element matrix gives reciprocal groups.
+TEST(FormFactors, GroupsOfElementsGiveTheFaceToFaceFactors) {
+  const gi::Mesh mesh = gi::make_mesh(gi::closed_box(1.0).surfaces, {0.25, 1});
+  const std::vector<gi::Polygon> e = gi::element_shapes(mesh);
+  const int n = static_cast<int>(e.size());
+  ASSERT_EQ(n, 96);
+  gi::FormFactorMatrix F{n, std::vector<double>(static_cast<std::size_t>(n) * n, 0.0)};
+  std::vector<double> areas;
+  std::vector<int> face;
+  for (int i = 0; i < n; ++i) {
+    areas.push_back(e[i].area);
+    face.push_back(mesh.elements[i].surface);
+    for (int j = 0; j < n; ++j)
+      if (mesh.elements[i].surface != mesh.elements[j].surface) F(i, j) = gi::form_factor_analytic(e[i], e[j], 10);
+  }
+  // Made exactly reciprocal: A_i F_ij and A_j F_ji replaced by their mean.
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      const double mean = 0.5 * (areas[i] * F(i, j) + areas[j] * F(j, i));
+      F(i, j) = mean / areas[i], F(j, i) = mean / areas[j];
+    }
+  const gi::FormFactorMatrix faces = gi::between_groups(F, areas, face, 6);
+  const std::vector<double> element_sums = gi::row_sums(F), face_sums = gi::row_sums(faces);
+  std::vector<double> mean_sum(6, 0.0);
+  for (int i = 0; i < n; ++i) mean_sum[face[i]] += element_sums[i] / 16;
+  for (int g = 0; g < 6; ++g) {
+    EXPECT_NEAR(face_sums[g], mean_sum[g], 1e-14) << "face " << g;
+    EXPECT_EQ(faces(g, g), 0.0);
+    const gi::vec3 ng = e[16 * g].normal;  // elements come surface by surface
+    for (int h = 0; h < 6; ++h) {
+      if (h == g) continue;
+      EXPECT_NEAR(faces(g, h), faces(h, g), 1e-15) << g << " " << h;  // equal areas: A F = A F
+      const gi::vec3 nh = e[16 * h].normal;
+      if (gi::dot(ng, nh) < -0.5)
+        EXPECT_NEAR(faces(g, h), gi::ff_parallel_rectangles(1, 1, 1), 1e-9) << g << " " << h;
+      else
+        EXPECT_NEAR(faces(g, h), gi::ff_perpendicular_rectangles(1, 1, 1), 2e-3) << g << " " << h;
+    }
+  }
+  EXPECT_THROW(gi::between_groups(F, areas, std::vector<int>(n, 6), 6), std::invalid_argument);
+  EXPECT_THROW(gi::between_groups(F, areas, face, 7), std::invalid_argument);  // group 6 has no area
 }

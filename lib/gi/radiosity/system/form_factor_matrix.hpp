@@ -22,4 +22,14 @@ double reciprocity_error(const FormFactorMatrix& F, const std::vector<double>& a
 // sum_j F_ij for each i: 1 in a closed room, less where some of the view escapes.
 std::vector<double> row_sums(const FormFactorMatrix& F);
 
+// The form factors between groups of elements (a wall, a block, the light), each
+// element i in group[i] of 0 .. groups - 1: the area-weighted mean of the rows,
+//   F_GH = sum_{i in G} A_i sum_{j in H} F_ij / sum_{i in G} A_i,
+// which is what the area-to-area definition gives for the union of the elements. Rows
+// keep their sums (1 in a closed room), and a reciprocal F gives a reciprocal answer,
+// A_G F_GH = A_H F_HG. Throws std::invalid_argument for a group out of range or one
+// with no area.
+FormFactorMatrix between_groups(const FormFactorMatrix& F, const std::vector<double>& areas,
+                                const std::vector<int>& group, int groups);
+
 }  // namespace gi
