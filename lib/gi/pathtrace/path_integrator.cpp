@@ -16,7 +16,7 @@ namespace {
 // alone, so the same picture at any scale (Cornell box in mm, furnace in m alike);
 // 1 + the coordinates on the Cornell box (scale 1024), as it was first tuned.
 double size_at(const vec3& p, double scale) {
-  return scale / 1024 + std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  return scale / 1024 + max_component(glm::abs(p));
 }
 
 // How far a new ray starts off its surface, along the normal on the side it leaves

@@ -58,7 +58,6 @@ Mesh make_mesh(const std::vector<Surface>& surfaces, const MeshSettings& setting
   for (int s = 0; s < static_cast<int>(surfaces.size()); ++s) {
     const std::array<vec3, 4>& c = surfaces[s].corners;
     const auto [nu, nv] = patch_grid(c, settings.patch_size);
-
     // The surface's grid of element corners, shared by neighbouring elements.
     const int first_vertex = static_cast<int>(mesh.vertices.size());
     const int NU = nu * m, NV = nv * m;
