@@ -4,13 +4,11 @@
 // traces eye rays through mirror and glass and, at the first diffuse surface, adds
 // direct light by shadow rays to the indirect light from the mesh -- read off it, or
 // gathered one bounce later. Every picture against the converged path-traced one.
-#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "gi/core/timer.hpp"
-#include "gi/image/diff.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/path_truth.hpp"
 #include "gi/radiosity/display/display.hpp"
@@ -19,17 +17,13 @@
 #include "gi/twopass/picture_mask.hpp"
 #include "gi/twopass/radiosity_pass.hpp"
 #include "gi/twopass/two_pass.hpp"
+#include "pictures.hpp"
+#include "where_each_fails.hpp"
 
 namespace {
 
-struct Settings {
-  std::string scene = "both";
-  std::string references = std::string(GI_SOURCE_DIR) + "/lessons/references";
-  int width = 128, height = 128, threads = 0;
-  std::uint64_t seed = 1;
-  gi::RadiosityPassSettings radiosity;
-  gi::TwoPassSettings eye;
-};
+using lesson16::Picture;
+using lesson16::Settings;
 
 gi::View view_of(const gi::TwoPassScene& scene, const Settings& s) {
   const std::string n = std::to_string(s.eye.samples);
@@ -44,12 +38,6 @@ std::optional<gi::Truth> stored_truth(const Settings& s) {
   if (s.width != s.height || side % s.width != 0) return std::nullopt;
   return gi::stored_truth(s.references, s.scene, s.width, s.height);
 }
-
-struct Picture {
-  std::string method;
-  gi::Image radiance;
-  double pass1_seconds, pass2_seconds;
-};
 
 // Radiosity alone: the mesh's B / pi through every pixel (display.hpp), smooth shading.
 // The mesh has no spheres: they are shadows on the walls and nothing else.
@@ -137,31 +125,6 @@ void equal_time(const Settings& s, const gi::TwoPassScene& scene, const Picture&
   lesson.table(table, "equal_time");
 }
 
-// 4. Where each fails, side by side with the truth, enlarged: squares given as
-//    fractions of the picture (they scale with --width).
-struct CropPlace {
-  std::string stem, caption;
-  double x, y;  // the square's top-left corner, fraction of width and height
-};
-
-void crops(const Settings& s, const std::vector<Picture>& pictures, const gi::Image& truth, gi::Lesson& lesson) {
-  const std::vector<CropPlace> cornell{{"shadow", "the floor between the blocks: their shadows", 0.36, 0.70},
-                                       {"corner", "the ceiling by the green wall: the gather's noise", 0.70, 0.10}};
-  const std::vector<CropPlace> spheres{{"caustic", "under the glass sphere: the caustic", 0.53, 0.64},
-                                       {"mirror", "the mirror sphere", 0.2, 0.55}};
-  const std::vector<CropPlace>& places = s.scene == "cornell" ? cornell : spheres;
-  const int side = std::min({std::max(8, s.width / 6), s.width, s.height}), factor = std::max(1, 128 / side);
-  for (const CropPlace& place : places) {
-    std::vector<gi::Image> row;
-    const int x = std::min(static_cast<int>(place.x * s.width), s.width - side);
-    const int y = std::min(static_cast<int>(place.y * s.height), s.height - side);
-    for (const Picture& p : pictures) row.push_back(gi::enlarge(gi::crop(p.radiance, x, y, side, side), factor));
-    row.push_back(gi::enlarge(gi::crop(truth, x, y, side, side), factor));
-    lesson.diagram(gi::side_by_side(row), s.scene + "_crop_" + place.stem,
-                   place.caption + ": ray traced, radiosity, two-pass mesh, two-pass gather, path traced", 2);
-  }
-}
-
 // Everything above for one scene.
 void two_pass_lesson(const Settings& s, const std::optional<gi::Truth>& truth, gi::Lesson& lesson) {
   const gi::TwoPassScene scene = gi::make_two_pass_scene(s.scene);
@@ -184,16 +147,10 @@ void two_pass_lesson(const Settings& s, const std::optional<gi::Truth>& truth, g
     return;
   }
   score(s, scene, pictures, *truth, mask, lesson);
-  if (scene.spheres.empty()) equal_time(s, scene, pictures.back(), static_cast<int>(pass.handoff.mesh.elements.size()), truth->mean, mask, lesson);
-  crops(s, pictures, truth->mean, lesson);
-  std::vector<gi::Image> row;
-  for (const Picture& p : pictures) row.push_back(p.radiance);
-  row.push_back(truth->mean);
-  lesson.diagram(gi::side_by_side(row), s.scene + "_side_by_side",
-                 "ray traced, radiosity, two-pass mesh, two-pass gather, path traced", 2);
-  lesson.diagram(gi::difference_image(pictures.back().radiance, truth->mean, 0.1), s.scene + "_gather_difference",
-                 "|two-pass with final gather - path traced|, mean over channels: black 0, red 0.1 (radiance)",
-                 gi::ColourScale{0, 0.1, "|difference| in radiance, mean over R, G, B"});
+  if (scene.spheres.empty())
+    equal_time(s, scene, pictures.back(), static_cast<int>(pass.handoff.mesh.elements.size()), truth->mean, mask,
+               lesson);
+  lesson16::where_each_fails(s, pictures, truth->mean, lesson);  // 4. where_each_fails.cpp
 }
 
 }  // namespace

@@ -1,0 +1,23 @@
+#pragma once
+// Lesson 06, steps 2 to 5, each a study of its own: where each method fails, as two
+// squares approach, the hemicube's aliasing (failures.cpp), and error against time
+// (error_against_time.cpp).
+#include "gi/radiosity/form_factors/form_factors.hpp"
+#include "gi/report/lesson.hpp"
+
+namespace lesson06 {
+
+// The failures table: one configuration per failure, each with an exact value.
+void where_each_method_fails(const gi::FormFactorSettings& base, gi::Lesson& lesson);
+
+// The near_field table: every method's error as two unit squares approach.
+void near_field(const gi::FormFactorSettings& base, gi::Lesson& lesson);
+
+// The hemicube_aliasing table: a 5 cm square ever farther away, at four resolutions.
+void hemicube_aliasing(gi::Lesson& lesson);
+
+// The error_vs_time table and chart: each method over its parameter (Monte Carlo up to
+// `most_rays` rays) on two unit squares at d = 1.
+void error_against_time(int most_rays, gi::Lesson& lesson);
+
+}  // namespace lesson06

@@ -1,0 +1,20 @@
+#pragma once
+// Lesson 13, steps 2 to 4, each in its own file beside main.cpp: the uniform meshes
+// beside the hierarchy (uniform_meshes.cpp), where it fails (stability.cpp), and what
+// can change without new links (what_can_change.cpp).
+#include "gi/report/chart.hpp"
+#include "gi/report/lesson.hpp"
+#include "scoring.hpp"
+
+namespace lesson13 {
+
+// The uniform table; adds the uniform meshes' curves to `chart`.
+void uniform_meshes(const Setup& s, gi::Chart& chart, gi::Lesson& lesson);
+
+// The stability table and its pictures.
+void stability(const Setup& s, gi::Lesson& lesson);
+
+// The relight table, the dimmer's and the new camera's lines, and their pictures.
+void what_can_change(const Setup& s, gi::Lesson& lesson);
+
+}  // namespace lesson13
