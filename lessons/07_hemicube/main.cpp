@@ -1,6 +1,6 @@
 // Lesson 07 -- the hemicube. What a hemicube on a Cornell-box floor element sees (its
 // item buffer, unfolded), the delta form factors of its cells, the whole form-factor
-// matrix as a heat map, and how row sums, receivers smaller than a cell and
+// matrix as a heat map and between whole objects, and how row sums, receivers smaller than a cell and
 // reciprocity change with resolution.
 #include <algorithm>
 #include <cmath>
@@ -127,13 +127,66 @@ void speed_table(const gi::Mesh& mesh, int element, int most_rays, gi::Lesson& l
   lesson.table(table, "speed");
 }
 
-// 2. The matrix as a heat map of log10 F_ij.
-void matrix_picture(const gi::FormFactorMatrix& F, int resolution, gi::Lesson& lesson) {
+// The object each element belongs to, named by its surface's first word: "short" for
+// the short block's five faces, "ceiling" for the four pieces around the light.
+std::vector<int> objects_of(const gi::Mesh& mesh, std::vector<std::string>& names) {
+  std::vector<int> object;
+  for (const gi::Element& e : mesh.elements) {
+    const std::string& surface = mesh.surfaces[e.surface].name;
+    const std::string name = surface.substr(0, surface.find(' '));
+    const auto at = std::find(names.begin(), names.end(), name);
+    object.push_back(static_cast<int>(at - names.begin()));
+    if (at == names.end()) names.push_back(name);
+  }
+  return object;
+}
+
+// 2. The matrix as a heat map of log10 F_ij, white lines where one object's elements
+// end and the next's begin (the mesh lists them surface by surface).
+void matrix_picture(const gi::Mesh& mesh, const gi::FormFactorMatrix& F, int resolution, gi::Lesson& lesson) {
   std::vector<double> logs(F.values.size());
   for (std::size_t k = 0; k < logs.size(); ++k) logs[k] = F.values[k] > 0 ? std::log10(F.values[k]) : -8;
-  lesson.diagram(gi::false_colour(logs, F.n, F.n, -6, -1), "form_factor_matrix",
+  gi::Image picture = gi::false_colour(logs, F.n, F.n, -6, -1);
+  std::vector<std::string> names;
+  const std::vector<int> object = objects_of(mesh, names);
+  for (int i = 1; i < F.n; ++i)
+    if (object[i] != object[i - 1])
+      for (int k = 0; k < F.n; ++k) picture.at(i, k) = picture.at(k, i) = gi::Pixel(1);
+  std::string order;
+  for (const std::string& name : names) order += (order.empty() ? "" : ", ") + name;
+  lesson.diagram(picture, "form_factor_matrix",
                  "log10 F_ij of the whole matrix (hemicube " + std::to_string(resolution) +
-                     "), black below 1e-6 to red at 0.1", gi::ColourScale{1e-6, 0.1, "form factor F_ij", true});
+                     "), black below 1e-6 to red at 0.1; rows (from) and columns (to) in the order " + order +
+                     ", white lines between them",
+                 gi::ColourScale{1e-6, 0.1, "form factor F_ij", true});
+}
+
+// 3. The same matrix between whole objects: F_GH, the share of what leaves object G
+// that lands on H (between_groups), and each row's sum: 1 in the closed box, less for
+// the floor, whose elements buried under the blocks send nothing anywhere.
+void object_table(const gi::Mesh& mesh, const gi::FormFactorMatrix& F, const std::vector<double>& areas,
+                  int resolution, gi::Lesson& lesson) {
+  std::vector<std::string> names;
+  const std::vector<int> object = objects_of(mesh, names);
+  const gi::FormFactorMatrix objects = gi::between_groups(F, areas, object, static_cast<int>(names.size()));
+  std::vector<gi::Column> columns{{"from \\ to"}};
+  for (const std::string& name : names) columns.push_back({name, 3});
+  columns.push_back({"sum", 3});
+  gi::Table table("Form factors between the closed box's objects (hemicube " + std::to_string(resolution) +
+                      "): the share of the light leaving the row's object that lands on the column's",
+                  columns);
+  for (int g = 0; g < objects.n; ++g) {
+    std::vector<gi::Cell> row(objects.n + 2, gi::Cell(names[g]));
+    double sum = 0;
+    for (int h = 0; h < objects.n; ++h) {
+      row[h + 1] = objects(g, h);
+      sum += objects(g, h);
+    }
+    row.back() = sum;
+    table.add_row(row);
+  }
+  std::cout << '\n';
+  lesson.table(table, "object_form_factors");
 }
 
 }  // namespace
@@ -165,6 +218,7 @@ int main(int argc, char** argv) {
     std::vector<int> resolutions;
     for (int r : {10, 20, 50, 100, 200, 400})
       if (r <= max_resolution) resolutions.push_back(r);
+    gi::FormFactorMatrix shown;  // the matrix at the pictures' resolution
     gi::Progress progress("hemicubes", static_cast<long long>(resolutions.size()));
     for (int r : resolutions) {
       const gi::Timer timer;
@@ -182,15 +236,17 @@ int main(int argc, char** argv) {
       table.add_row({r, 3 * r * r, ms, static_cast<long long>(F.n - sums.size()), std::max(deviation, 1e-17),
                      gi::hemicube_weights(r).unnormalised_sum, stats.sub_cell_receivers,
                      stats.rows_with_sub_cell_receivers, stats.sub_cell_missed, total_reciprocity_error(F, areas)});
-      if (r == resolution) matrix_picture(F, r, lesson);
+      if (r == resolution) shown = F;
     }
     progress.finish();
     // The picture's resolution is not one of the table's: its matrix is made for the picture alone.
     if (std::find(resolutions.begin(), resolutions.end(), resolution) == resolutions.end())
-      matrix_picture(gi::form_factor_matrix_hemicube(shapes, resolution, lesson.threads()), resolution, lesson);
+      shown = gi::form_factor_matrix_hemicube(shapes, resolution, lesson.threads());
     lesson.table(table, "resolution");
+    matrix_picture(mesh, shown, resolution, lesson);
+    object_table(mesh, shown, areas, resolution, lesson);
 
-    // 3. The speed figure: one row against a finely meshed box, one thread, and the
+    // 4. The speed figure: one row against a finely meshed box, one thread, and the
     // ray-cast rows that reach the same accuracy on the floor element of part 1.
     const gi::Mesh fine = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, speed_elements, 1), 1});
     speed_table(fine, floor_element(fine), speed_rays, lesson);
