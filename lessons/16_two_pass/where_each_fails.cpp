@@ -19,7 +19,7 @@ struct CropPlace {
 void crops(const Settings& s, const std::vector<Picture>& pictures, const gi::Image& truth, gi::Lesson& lesson) {
   const std::vector<CropPlace> cornell{{"shadow", "the floor between the blocks: their shadows", 0.36, 0.70},
                                        {"corner", "the ceiling by the green wall: the gather's noise", 0.70, 0.10}};
-  const std::vector<CropPlace> spheres{{"caustic", "under the glass sphere: the caustic", 0.53, 0.64},
+  const std::vector<CropPlace> spheres{{"caustic", "under the glass sphere: the caustic", 0.58, 0.80},
                                        {"mirror", "the mirror sphere", 0.2, 0.55}};
   const std::vector<CropPlace>& places = s.scene == "cornell" ? cornell : spheres;
   const int side = std::min({std::max(8, s.width / 6), s.width, s.height}), factor = std::max(1, 128 / side);
