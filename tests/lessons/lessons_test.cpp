@@ -89,7 +89,7 @@ TEST(Lessons, RecursiveSweepWritesImagesTablesAndChart) {
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("Contribution thresholds"), std::string::npos);
   for (const char* file : {"depth_0.png", "depth_3.png", "reference.png", "diff_depth_1.png", "depth_limits.csv",
-                           "thresholds.csv", "rays_per_depth.csv", "error_vs_time.svg"})
+                           "thresholds.csv", "rays_per_depth.csv", "error_vs_rays.svg"})
     EXPECT_TRUE(fs::exists(out_dir("02") + "/" + file)) << file;
   check_pictures(out_dir("02"), 5);
 }
