@@ -84,7 +84,6 @@ void thresholds(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
                       std::to_string(s.mask.count()) + " interior 8x8 blocks)",
                   {{"BF_eps", 0, gi::Format::Scientific}, {"light"}, {"leaves"}, {"links"}, {"links / leaf", 1},
                    {"link MB", 2}, {"s", 2}, {"error %", 2}});
-  gi::Series links{"hierarchical: links", {}, {}}, square{"uniform mesh: n^2 form factors", {}, {}};
   gi::Series all{"hierarchical, all light by links", {}, {}}, exact{"hierarchical, exact direct", {}, {}},
       pixel{"hierarchical, direct per pixel", {}, {}}, gathered{"hierarchical, direct per pixel, final gather", {}, {}};
   std::vector<gi::Image> shown;
@@ -103,8 +102,6 @@ void thresholds(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
       };
       if (!exact_direct) {
         row("all by links", score(s, run, Shown::Leaves), all);
-        links.x.push_back(leaves), links.y.push_back(n_links);
-        square.x.push_back(leaves), square.y.push_back(leaves * (leaves - 1));
         gi::DisplaySettings large = s.display;  // room for the leaves' outlines
         large.width = large.height = 384;
         shown.push_back(gi::render_leaves(run, s.scene.camera, large, s.seed, s.threads).with_mesh);
@@ -122,9 +119,6 @@ void thresholds(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
   lesson.table(table, "thresholds");
   lesson.diagram(gi::side_by_side(shown), "leaves", "the leaves at BF_eps 1e-2, 3e-3, 1e-3 and 3e-4, all light by links",
                  1);
-  lesson.chart({"Links against leaves: hierarchical beside a uniform mesh", "leaves (elements)", "links (form factors)",
-                true, true, {links, square}},
-               "links");
   chart.series.push_back(all), chart.series.push_back(exact), chart.series.push_back(pixel);
   chart.series.push_back(gathered);
 }
@@ -149,7 +143,7 @@ int main(int argc, char** argv) {
       .add("--min-area", s.settings.refinement.min_area, "no node below this fraction of the scene's area", 1e-7, 0.1)
       .add("--uniform-elements", s.uniform_elements, "the finest uniform mesh compared (and a quarter of it)", 100, 20000)
       .add("--exposure", s.exposure, "multiplies the radiance before display", 0.01, 100.0)
-      .add_flag("--skip-studies", skip_studies, "only the thresholds (no uniform meshes, failures or relighting)");
+      .add_flag("--skip-studies", skip_studies, "only the thresholds (no links against leaves, uniform meshes, failures or relighting)");
   const int size = 256;  // the stored truth's
   std::optional<gi::Truth> truth;
   lesson.add_check([&] {  // before any work: a damaged or stale truth stops the lesson in one line
@@ -174,9 +168,10 @@ int main(int argc, char** argv) {
     s.direct = &direct;
     thresholds(s, chart, lesson);  // 1. above
     if (skip_studies) return;
-    lesson13::uniform_meshes(s, chart, lesson);  // 2. uniform_meshes.cpp
+    lesson13::links_against_leaves(s, lesson);   // 2. links_against_leaves.cpp
+    lesson13::uniform_meshes(s, chart, lesson);  // 3. uniform_meshes.cpp
     lesson.chart(chart, "error_time");
-    lesson13::stability(s, lesson);        // 3. stability.cpp
-    lesson13::what_can_change(s, lesson);  // 4. what_can_change.cpp
+    lesson13::stability(s, lesson);        // 4. stability.cpp
+    lesson13::what_can_change(s, lesson);  // 5. what_can_change.cpp
   });
 }

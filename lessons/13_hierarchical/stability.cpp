@@ -12,7 +12,7 @@
 
 namespace lesson13 {
 
-// 3. Where it fails, one row each, against the same truth: thresholds so loose that
+// 4. Where it fails, one row each, against the same truth: thresholds so loose that
 // nothing is split, and a minimum area too large to resolve the shadows (all light by
 // links: the shadows are then the links' business).
 void stability(const Setup& s, gi::Lesson& lesson) {

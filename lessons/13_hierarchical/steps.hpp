@@ -1,12 +1,16 @@
 #pragma once
-// Lesson 13, steps 2 to 4, each in its own file beside main.cpp: the uniform meshes
-// beside the hierarchy (uniform_meshes.cpp), where it fails (stability.cpp), and what
-// can change without new links (what_can_change.cpp).
+// Lesson 13, steps 2 to 5, each in its own file beside main.cpp: links against leaves
+// (links_against_leaves.cpp), the uniform meshes beside the hierarchy
+// (uniform_meshes.cpp), where it fails (stability.cpp), and what can change without
+// new links (what_can_change.cpp).
 #include "gi/report/chart.hpp"
 #include "gi/report/lesson.hpp"
 #include "scoring.hpp"
 
 namespace lesson13 {
+
+// The links table and chart: leaves and links as the smallest node allowed shrinks.
+void links_against_leaves(const Setup& s, gi::Lesson& lesson);
 
 // The uniform table; adds the uniform meshes' curves to `chart`.
 void uniform_meshes(const Setup& s, gi::Chart& chart, gi::Lesson& lesson);

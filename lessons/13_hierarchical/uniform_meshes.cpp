@@ -11,7 +11,7 @@
 
 namespace lesson13 {
 
-// 2. Uniform meshes as lesson 12 seats them (exact direct light, hemicube sized to the
+// 3. Uniform meshes as lesson 12 seats them (exact direct light, hemicube sized to the
 // mesh, Gauss-Seidel), shown both ways: error against whole time, mesh to B.
 void uniform_meshes(const Setup& s, gi::Chart& chart, gi::Lesson& lesson) {
   gi::Table table("Uniform meshes, exact direct + hemicube, Gauss-Seidel to 1e-5; against the same truth",

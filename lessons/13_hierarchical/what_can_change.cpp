@@ -13,7 +13,7 @@
 
 namespace lesson13 {
 
-// 4. What can change: a new light on the same links (re-solve only) against a full
+// 5. What can change: a new light on the same links (re-solve only) against a full
 // recompute; a dimmer is a product (the system is linear in E); a new camera is a new
 // picture only. All light by links here: the links then carry the light itself.
 void what_can_change(const Setup& s, gi::Lesson& lesson) {
