@@ -1,0 +1,41 @@
+# Link-time optimisation (LTO) for the programs whose speed is measured, and quick
+# links for everything else.
+#
+# gi_fast_code(TARGET): the library's topics, the lessons and the benches.
+# gi_plain_link(TARGET): the unit tests and the graded programs.
+#
+# With GCC the library's objects are "fat": each holds GCC's intermediate code, which
+# an LTO link optimises across files, and ordinary machine code, which a plain link
+# uses as it is. A lesson's link then optimises the whole program while a test's link
+# (-fno-lto) only joins the objects: a few tenths of a second instead of a lesson's
+# 15-20. Clang has no fat objects, so there the whole Release build links with LTO
+# (GI_LTO=OFF turns it off).
+include(CheckIPOSupported)
+check_ipo_supported(RESULT gi_ipo_supported LANGUAGES CXX)
+set(gi_lto OFF)
+if(gi_ipo_supported AND GI_LTO AND CMAKE_BUILD_TYPE STREQUAL "Release")
+  set(gi_lto ON)
+endif()
+set(gi_fat_lto OFF)
+if(gi_lto AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+  set(gi_fat_lto ON)
+  # What CMake adds to an LTO target's compile line: fat objects instead of its
+  # default -fno-fat-lto-objects.
+  set(CMAKE_CXX_COMPILE_OPTIONS_IPO -flto=auto -ffat-lto-objects)
+elseif(gi_lto)
+  set(CMAKE_INTERPROCEDURAL_OPTIMIZATION_RELEASE ON)
+endif()
+
+function(gi_fast_code target)
+  if(gi_fat_lto)
+    set_property(TARGET ${target} PROPERTY INTERPROCEDURAL_OPTIMIZATION ON)
+  endif()
+endfunction()
+
+function(gi_plain_link target)
+  if(gi_fat_lto)
+    # Without it GCC's linker plugin would find the intermediate code in the
+    # library's objects and optimise the whole test program anyway.
+    target_link_options(${target} PRIVATE -fno-lto)
+  endif()
+endfunction()
