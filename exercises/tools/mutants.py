@@ -199,8 +199,8 @@ def leading_includes(text):
 
 class Preambles:
     """Each mutated source file's opening #include lines, compiled once into a
-    precompiled header with the flags of the file's own compile, for all the mutants of
-    that file: a mutant's compile then reads the headers from it and parses only the
+    precompiled header with the flags of the file's own compile (less CMake's own
+    precompiled header, which this one replaces), for all the mutants of that file: a mutant's compile then reads the headers from it and parses only the
     file's own code, about a third of the time (the file's #include lines find their
     headers already read: #pragma once). Removed when the file's last mutant is done.
     Where one cannot be made (a header, a compiler that refuses), mutants compile as usual."""
@@ -225,7 +225,7 @@ class Preambles:
         header = self.work / "build" / OVERLAYS / "preambles" / (rel.replace("/", "_") + ".hpp")
         header.parent.mkdir(parents=True, exist_ok=True)
         header.write_text(text)
-        words, argv, skip = shlex.split(command), [], 0
+        words, argv, skip = shlex.split(overlay.without_cmake_pch(command)), [], 0
         for word in words:
             if skip:
                 skip -= 1

@@ -28,6 +28,19 @@ FOLDER = "grade-overlay"
 ARCHIVE = re.compile(r"(?<![^\s/])(?:[\w.+]*-)?ar(?:-[\d.]+)?\s+[a-zA-Z]+\s+(\S+\.a)(?![^\s])")
 
 
+# CMake's precompiled header on a compile line. GCC: -include DIR/cmake_pch.hxx (and
+# -Winvalid-pch); Clang: -Xclang -include-pch -Xclang DIR/cmake_pch.hxx.pch -Xclang
+# -include -Xclang DIR/cmake_pch.hxx.
+CMAKE_PCH = re.compile(r"(?<![^\s])(?:-Winvalid-pch|(?:-Xclang\s+)?-include(?:-pch)?\s+(?:-Xclang\s+)?"
+                       r"\S*cmake_pch\.hxx(?:\.pch|\.gch)?)(?![^\s])")
+
+
+def without_cmake_pch(command):
+    """The compile command without CMake's precompiled header: a file given a
+    precompiled preamble of its own (the mutant suite's) can read only one."""
+    return CMAKE_PCH.sub("", command)
+
+
 class OverlayError(Exception):
     """The build cannot be replayed this way (not Ninja, or a command not understood)."""
 
@@ -107,6 +120,7 @@ def rebuild(root, build_dir, target, failed_objects, stubbed, folder=FOLDER, com
             raise OverlayError(f"a compile command of {target} without -I")
         first = f"-I{shlex.quote(str(include))} "
         if prefix and prefix.get(rel):
+            new = without_cmake_pch(new)
             first += f"-include {shlex.quote(str(prefix[rel]))} "
         compiles.append((new[:first_include.start()] + first + new[first_include.start():], build_dir / new_obj))
     with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:

@@ -16,6 +16,7 @@ import excerpts  # noqa: E402
 import hand_in   # noqa: E402
 import grade     # noqa: E402
 import mutants   # noqa: E402
+import overlay   # noqa: E402
 import regions   # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -273,6 +274,24 @@ class MutantBuilds(unittest.TestCase):
                                             text=True).stdout, "5\n", "the reference's program is the reference's")
             done = subprocess.run(["ninja", "-C", work / "build", "-n"], capture_output=True, text=True)
             self.assertIn("no work to do", done.stdout, "the reference's build is not changed")
+
+
+class CMakePrecompiledHeader(unittest.TestCase):
+    """A mutated file reads its own precompiled preamble: CMake's precompiled header
+    leaves its compile line, whichever compiler wrote it, and nothing else does."""
+
+    def test_gcc_and_clang_lines_lose_it_and_keep_the_rest(self):
+        gcc = ("/usr/bin/c++ -DX=\\\"/a b\\\" -I/src/lib -O1 -Winvalid-pch -include "
+               "/b/lib/gi/core/CMakeFiles/gi_core.dir/cmake_pch.hxx -MD -MT o.o -MF o.o.d -o o.o -c /src/lib/x.cpp")
+        clang = ("clang++ -I/src/lib -Xclang -include-pch -Xclang /b/d/cmake_pch.hxx.pch -Xclang -include "
+                 "-Xclang /b/d/cmake_pch.hxx -include /src/own.hpp -c /src/lib/x.cpp")
+        self.assertEqual(overlay.without_cmake_pch(gcc).split(),
+                         ["/usr/bin/c++", "-DX=\\\"/a", "b\\\"", "-I/src/lib", "-O1", "-MD", "-MT", "o.o", "-MF",
+                          "o.o.d", "-o", "o.o", "-c", "/src/lib/x.cpp"])
+        self.assertEqual(overlay.without_cmake_pch(clang).split(),
+                         ["clang++", "-I/src/lib", "-include", "/src/own.hpp", "-c", "/src/lib/x.cpp"])
+        plain = "c++ -I/src/lib -include /src/lib/gi/core/math.hpp -c /src/lib/x.cpp"
+        self.assertEqual(overlay.without_cmake_pch(plain), plain, "a header of the project's own stays")
 
 
 MACRO = re.compile(r"\b(EXPECT|ASSERT)_[A-Z_]+\s*\(")
