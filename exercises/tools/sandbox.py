@@ -321,9 +321,30 @@ def kill_descendants(me):
         time.sleep(0.002)
 
 
+def others_of(uid):
+    """Whether a process other than this one runs as `uid` (its real or saved user id:
+    those kill(-1) reaches from that user), as far as /proc shows; True when it cannot
+    be read, so that the caller goes on killing until its deadline."""
+    me = os.getpid()
+    try:
+        for status in Path("/proc").glob("[0-9]*/status"):
+            try:
+                line = next(l for l in status.read_text().splitlines() if l.startswith("Uid:"))
+            except (OSError, StopIteration):
+                continue
+            real, _, saved = (int(x) for x in line.split()[1:4])
+            if uid in (real, saved) and int(status.parent.name) != me:
+                return True
+    except OSError:
+        return True
+    return False
+
+
 def kill_user(uid, deadline):
     """Kills every process of `uid` (a helper process takes that user id, since only
-    its own user may signal all of them with kill(-1))."""
+    its own user may signal all of them with kill(-1)). kill(-1) succeeds whenever the
+    system has any other process, so the helper stops when /proc shows none of the
+    user's, or at the deadline."""
     helper = os.fork()
     if helper == 0:
         try:
@@ -333,6 +354,8 @@ def kill_user(uid, deadline):
             while time.monotonic() < deadline:
                 os.kill(-1, signal.SIGSTOP)  # stopped, none of them can fork any more
                 os.kill(-1, signal.SIGKILL)
+                if not others_of(uid):
+                    os._exit(0)
                 time.sleep(0.001)
         except ProcessLookupError:
             os._exit(0)

@@ -306,6 +306,42 @@ class Users(unittest.TestCase):
         with gtest_run.Runner() as third:
             self.assertEqual(third.uid, taken, "a grader that has ended frees its user")
 
+    @unittest.skipUnless(processes.POSIX and os.geteuid() == 0, "taking another user id needs root")
+    def test_a_users_processes_are_killed_and_the_killing_ends_when_none_is_left(self):
+        # Without a PID namespace, what a test leaves is killed by user id. kill(-1)
+        # succeeds while the system has any other process, so its success cannot say
+        # when the user has none left: /proc does.
+        uid, lock = sandbox.free_uid()
+        try:
+            self.assertFalse(sandbox.others_of(uid))
+            child = os.fork()
+            if child == 0:
+                os.setgroups([])
+                os.setgid(uid)
+                os.setuid(uid)
+                if os.fork() == 0:  # a grandchild, detached, that would outlive its parent
+                    os.setsid()
+                    time.sleep(600)
+                time.sleep(600)
+                os._exit(0)
+            deadline = time.monotonic() + 5
+            while not sandbox.others_of(uid) and time.monotonic() < deadline:
+                time.sleep(0.01)
+            self.assertTrue(sandbox.others_of(uid), "the user's processes are seen")
+            start = time.monotonic()
+            sandbox.kill_user(uid, start + 30)
+            self.assertLess(time.monotonic() - start, 20, "the killing ends when no process is left, not at the deadline")
+            try:
+                os.waitpid(child, 0)
+            except ChildProcessError:
+                pass  # kill_user reaps its caller's children as they die
+            deadline = time.monotonic() + 5  # the grandchild's parent is now init, which reaps it
+            while sandbox.others_of(uid) and time.monotonic() < deadline:
+                time.sleep(0.01)
+            self.assertFalse(sandbox.others_of(uid), "every process of the user is gone")
+        finally:
+            os.close(lock)
+
 
 class Hints(unittest.TestCase):
     def test_the_tests_message_without_gtests_lines(self):
