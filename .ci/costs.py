@@ -10,6 +10,8 @@ Seconds are those of each step or test alone: on two cores a build's steps run t
 time, so their sum is about twice the wall-clock time, which is printed beside it.
 """
 import json
+import re
+import shutil
 import subprocess
 import sys
 from collections import defaultdict
@@ -80,8 +82,9 @@ def test_times(build):
         raise SystemExit(f"costs: error: {log} not found: run ctest first")
     times, name = {}, None
     for line in log.read_text(errors="replace").splitlines():
-        if line.startswith("Test: "):
-            name = line[len("Test: "):].strip()
+        opened = re.match(r"^\d+/\d+ Test: (.+)$", line)  # "12/923 Test: NAME"
+        if opened:
+            name = opened.group(1).strip()
         elif line.startswith('Test time =') and name:
             times[name] = float(line.split("=")[1].split()[0])
             name = None
@@ -89,8 +92,15 @@ def test_times(build):
 
 
 def test_labels(build):
-    """{test: [labels]} as ctest lists them."""
-    listed = subprocess.run(["ctest", "--show-only=json-v1"], cwd=build, capture_output=True, text=True)
+    """{test: [labels]} as ctest lists them. Listing writes a new, empty LastTest.log:
+    the last run's is put back afterwards."""
+    log = Path(build) / "Testing" / "Temporary" / "LastTest.log"
+    kept = log.with_name("LastTest.log.costs")
+    shutil.copyfile(log, kept)
+    try:
+        listed = subprocess.run(["ctest", "--show-only=json-v1"], cwd=build, capture_output=True, text=True)
+    finally:
+        shutil.move(kept, log)
     if listed.returncode != 0:
         raise SystemExit(f"costs: error: ctest --show-only failed in {build}")
     labels = {}
@@ -107,7 +117,7 @@ def test_costs(build):
         for label in labels.get(name) or ["(none)"]:
             by_label[label] += seconds
             count[label] += 1
-    print(f"tests: {len(times)} run, {sum(times.values()):.0f} s of tests (a test with two labels counts in both)")
+    print(f"tests: {len(times)} run, {sum(times.values()):.0f} s of tests")
     for label, seconds in sorted(by_label.items(), key=lambda kv: -kv[1]):
         print(f"  {seconds:8.1f} s  {count[label]:5d} tests  {label}")
     print("the ten slowest tests:")

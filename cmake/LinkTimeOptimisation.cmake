@@ -1,7 +1,8 @@
 # Link-time optimisation (LTO) for the programs whose speed is measured, and quick
 # links for everything else.
 #
-# gi_fast_code(TARGET): the library's topics, the lessons and the benches.
+# gi_fast_code(TARGET): the library's topics that run in inner loops.
+# gi_fast_program(TARGET): the lessons and the benches.
 # gi_plain_link(TARGET): the unit tests and the graded programs.
 #
 # With GCC the library's objects are "fat": each holds GCC's intermediate code, which
@@ -29,6 +30,16 @@ endif()
 function(gi_fast_code target)
   if(gi_fat_lto)
     set_property(TARGET ${target} PROPERTY INTERPROCEDURAL_OPTIMIZATION ON)
+  endif()
+endfunction()
+
+# gi_fast_program(TARGET): a lesson or a bench. Its own objects are only ever linked
+# with LTO, so they hold GCC's intermediate code alone ("slim"): their machine code
+# would never be used (a lesson's file compiles in about 40% less time).
+function(gi_fast_program target)
+  gi_fast_code(${target})
+  if(gi_fat_lto)
+    target_compile_options(${target} PRIVATE -fno-fat-lto-objects)
   endif()
 endfunction()
 

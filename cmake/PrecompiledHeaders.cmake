@@ -4,11 +4,12 @@
 # spends about four fifths of its compile parsing the standard library and GLM.
 # Each kind of program reads its heavy headers once from one precompiled file:
 #
-#   gi_precompile(TARGET library)  the library's topics, the lessons and the benches:
-#                                  GLM and the standard library (never a header of lib/,
-#                                  so that a file the grader stubs is read afresh);
-#                                  library_plain, the same for the topics compiled
-#                                  without link-time optimisation (other flags)
+#   gi_precompile(TARGET library)  the library's topics: GLM and the standard library
+#                                  (never a header of lib/, so that a file the grader
+#                                  stubs is read afresh); library_plain and lessons, the
+#                                  same for the topics compiled without link-time
+#                                  optimisation and for the lessons and benches (each
+#                                  kind is compiled with flags of its own)
 #   gi_precompile(TARGET tests)    the unit tests: GoogleTest and support/print.hpp, which
 #                                  every test file sees first
 #   gi_precompile(TARGET graded)   the labs' graded programs: GoogleTest only (the lab's
@@ -35,6 +36,7 @@ endif()
 set(gi_pch_library <glm/glm.hpp> <algorithm> <array> <cmath> <cstdint> <functional> <iostream>
     <limits> <memory> <optional> <sstream> <string> <utility> <vector>)
 set(gi_pch_library_plain ${gi_pch_library})  # the topics not optimised across files
+set(gi_pch_lessons ${gi_pch_library})  # the lessons and benches (LTO's intermediate code only)
 set(gi_pch_tests <gtest/gtest.h> ${PROJECT_SOURCE_DIR}/exercises/support/print.hpp)
 set(gi_pch_graded <gtest/gtest.h>)
 
