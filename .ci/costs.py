@@ -12,6 +12,7 @@ time, so their sum is about twice the wall-clock time, which is printed beside i
 import json
 import re
 import shutil
+import signal
 import subprocess
 import sys
 from collections import defaultdict
@@ -126,8 +127,9 @@ def test_costs(build):
 
 
 def main(argv):
+    if hasattr(signal, "SIGPIPE"):  # `costs.py build DIR | head` stops quietly
+        signal.signal(signal.SIGPIPE, signal.SIG_DFL)
     if len(argv) != 2 or argv[0] not in ("build", "tests"):
-        print(__doc__.strip().splitlines()[2].strip(), file=sys.stderr)
         print("usage: .ci/costs.py build|tests BUILD_DIR", file=sys.stderr)
         return 2
     if not Path(argv[1]).is_dir():

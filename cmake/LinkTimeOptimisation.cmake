@@ -5,12 +5,12 @@
 # gi_fast_program(TARGET): the lessons and the benches.
 # gi_plain_link(TARGET): the unit tests and the graded programs.
 #
-# With GCC the library's objects are "fat": each holds GCC's intermediate code, which
-# an LTO link optimises across files, and ordinary machine code, which a plain link
-# uses as it is. A lesson's link then optimises the whole program while a test's link
-# (-fno-lto) only joins the objects: a few tenths of a second instead of a lesson's
-# 15-20. Clang has no fat objects, so there the whole Release build links with LTO
-# (GI_LTO=OFF turns it off).
+# With GCC the objects of the library's inner-loop topics (lib/CMakeLists.txt) are
+# "fat": each holds GCC's intermediate code, which an LTO link optimises across files,
+# and ordinary machine code, which a plain link uses as it is. A lesson's link then
+# optimises the whole program while a test's link (-fno-lto) only joins the objects: a
+# few tenths of a second instead of a lesson's 8 to 22. Clang has no fat objects, so
+# there the whole Release build links with LTO (GI_LTO=OFF turns it off).
 include(CheckIPOSupported)
 check_ipo_supported(RESULT gi_ipo_supported LANGUAGES CXX)
 set(gi_lto OFF)
