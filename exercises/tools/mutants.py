@@ -200,8 +200,9 @@ def leading_includes(text):
 class Preambles:
     """Each mutated source file's opening #include lines, compiled once into a
     precompiled header with the flags of the file's own compile (less CMake's own
-    precompiled header, which this one replaces), for all the mutants of that file: a mutant's compile then reads the headers from it and parses only the
-    file's own code, about a third of the time (the file's #include lines find their
+    precompiled header, which this one replaces), for all the mutants of that file: a
+    mutant's compile then reads the headers from it and parses only the file's own
+    code, about a third of the time (the file's #include lines find their
     headers already read: #pragma once). Removed when the file's last mutant is done.
     Where one cannot be made (a header, a compiler that refuses), mutants compile as usual."""
 

@@ -81,6 +81,17 @@ def call(lib, name, *args):
     return function(*args) == 0
 
 
+def process_uids():
+    """(pid, (real, effective, saved, filesystem user ids)) of each process /proc shows;
+    raises OSError when /proc itself cannot be read."""
+    for status in Path("/proc").glob("[0-9]*/status"):
+        try:
+            line = next(l for l in status.read_text().splitlines() if l.startswith("Uid:"))
+            yield int(status.parent.name), tuple(int(x) for x in line.split()[1:5])
+        except (OSError, StopIteration, ValueError):
+            continue  # gone meanwhile, or not a process's
+
+
 def free_uid():
     """(uid, lock): a user id no account and no process uses, for the programs under test
     (root only), and a descriptor holding it: two graders running at once must not share
@@ -91,12 +102,8 @@ def free_uid():
         used |= {int(line.split(":")[2]) for line in Path("/etc/passwd").read_text().splitlines() if line.count(":") >= 2}
     except (OSError, ValueError):
         pass
-    for status in Path("/proc").glob("[0-9]*/status"):
-        try:
-            used |= {int(x) for line in status.read_text().splitlines() if line.startswith("Uid:")
-                     for x in line.split()[1:]}
-        except (OSError, ValueError):
-            pass
+    for _, uids in process_uids():
+        used |= set(uids)
     import fcntl  # POSIX, as is running as root
 
     for uid in range(61000, 62000):
@@ -327,17 +334,9 @@ def others_of(uid):
     be read, so that the caller goes on killing until its deadline."""
     me = os.getpid()
     try:
-        for status in Path("/proc").glob("[0-9]*/status"):
-            try:
-                line = next(l for l in status.read_text().splitlines() if l.startswith("Uid:"))
-            except (OSError, StopIteration):
-                continue
-            real, _, saved = (int(x) for x in line.split()[1:4])
-            if uid in (real, saved) and int(status.parent.name) != me:
-                return True
+        return any(pid != me and uid in (uids[0], uids[2]) for pid, uids in process_uids())
     except OSError:
         return True
-    return False
 
 
 def kill_user(uid, deadline):
