@@ -251,6 +251,8 @@ def sync_tree(root, copy, files=None):
             shutil.copyfile(path, target)  # a new mtime: a stale object is never kept
             shutil.copymode(path, target)
             changed.append(rel)
+        elif path.stat().st_mode != target.stat().st_mode:
+            shutil.copymode(path, target)  # the same text, made executable (or not) since
     if files is None and (copy / "exercises").is_dir():
         keep = {rel.as_posix() for rel in wanted}
         for old in project_files(copy):

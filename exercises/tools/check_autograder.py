@@ -72,14 +72,13 @@ def main(argv):
         submission.make_zip(tmp / "autograder.zip", [1], "after_published")
         with zipfile.ZipFile(tmp / "autograder.zip") as z:
             names = set(z.namelist())
-            z.extractall(tmp / "ag" / "source")
+        submission.unpack(tmp / "autograder.zip", tmp / "ag" / "source")
         for required in ("setup.sh", "run_autograder", submission.CONFIG):
             expect(required in names, f"the zip lacks {required}", problems)
         expect(any("/hidden/" in n for n in names), "the zip lacks the hidden tests", problems)
         expect(not any(n.startswith("exercises/mutants/") for n in names), "the zip carries the mutants", problems)
         shutil.copytree(folder / "planted", tmp / "ag" / "submission")
         script = tmp / "ag" / "source" / "run_autograder"
-        os.chmod(script, 0o755)
         done = subprocess.run([str(script)], capture_output=True, text=True, errors="replace",
                               env=dict(os.environ, GI_AUTOGRADER_ROOT=str(tmp / "ag"), GI_AUTOGRADER_WORK=str(work)))
         print(done.stdout[-3000:], done.stderr[-3000:])

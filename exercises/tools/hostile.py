@@ -25,7 +25,6 @@ import subprocess
 import sys
 import tempfile
 import time
-import zipfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -37,6 +36,11 @@ import submission  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 CANARY = "GI_GRADER_SECRET_CANARY"
+# The autograder's time limit per test program run (make-zip --timeout). The attacks
+# that run until they are stopped (a sleep, a flood, a memory bomb) meet it whatever it
+# is; lab 1's right answers finish in milliseconds. Short, so that the four runs that
+# end at the limit cost seconds each, not the default's ten.
+TIME_LIMIT = 3.0
 
 # Attacks, as the bodies of regions 1.1 (sphere.cpp) and 1.2 (plane.cpp). {ROOT} is the
 # autograder's unpacked tree, {WORK} its build folder, {RESULTS} the results file,
@@ -174,6 +178,7 @@ class Case:
     fallback: bool = False             # graded again with the namespaces switched off
     needs: str = ""                    # "limits" or "user": only where the sandbox has them
     note: str = ""                     # a word the notes must carry
+    says: str = ""                     # words a visible test's output must carry
     prefix: str = ""                   # put before the reference body of 1.1
     settle: float = 1.0                # seconds waited after grading before the results are read again
 
@@ -186,7 +191,8 @@ CASES = [
          earns={"1.1": 0, "1.2": 0}, fallback=True),
     Case("detach", "fork, setsid, fork: a grandchild that rewrites results.json after grading; 1.2 sleeps past the "
          "time limit", sphere=DETACH, plane=SLEEP_PAST_THE_LIMIT, earns={"1.1": 0, "1.2": 0}, fallback=True,
-         settle=6.0),  # its writer, had it lived, would write 4 s after it started
+         settle=6.0,  # its writer, had it lived, would write 4 s after it started
+         says=f"timed out after {TIME_LIMIT:g} s"),  # the zip's own limit, not the default
     Case("links", "lib/gi/geometry/*.cpp are links to the autograder's own reference", links=True,
          earns={"1.1": 0, "1.2": 0}, note="link"),
     Case("text", "an #include of the hidden tests in 1.1; a '}' that closes the function and a global whose "
@@ -287,17 +293,8 @@ def check_results(case, data, label, tests, ag, work, secrets, problems, notes_w
            "the visible summary counts the hidden tests")
     if notes_word:
         expect(notes_word in data["output"], f"the notes do not say '{notes_word}'")
-
-
-def unpack(archive, folder):
-    """The zip unpacked as Gradescope's unzip does it, with each file's mode (scripts
-    stay executable; Python's extractall drops the modes)."""
-    with zipfile.ZipFile(archive) as z:
-        z.extractall(folder)
-        for info in z.infolist():
-            mode = (info.external_attr >> 16) & 0o777
-            if mode and not info.is_dir():
-                os.chmod(folder / info.filename, mode)
+    if case.says:
+        expect(case.says in visible_text(data), f"no visible test says '{case.says}'")
 
 
 def autograde(ag, work, submission_folder, env_extra):
@@ -320,8 +317,8 @@ def main(argv):
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         ag = tmp / "ag"
-        submission.make_zip(tmp / "autograder.zip", [1], "after_published")
-        unpack(tmp / "autograder.zip", ag / "source")
+        submission.make_zip(tmp / "autograder.zip", [1], "after_published", TIME_LIMIT)
+        submission.unpack(tmp / "autograder.zip", ag / "source")
         values = {"ROOT": str(ag / "source"), "WORK": str(work), "RESULTS": str(ag / "results" / "results.json"),
                   "CANARY": CANARY}
         secrets = secrets_of(ag / "source")
@@ -357,7 +354,7 @@ def main(argv):
                 if fingerprint(ag / "source") != before:
                     problems.append(f"{label}: the autograder's tree was changed")
                     shutil.rmtree(ag / "source")
-                    unpack(tmp / "autograder.zip", ag / "source")
+                    submission.unpack(tmp / "autograder.zip", ag / "source")
                 scores = {e: sum(t["score"] for t in data["tests"] if t["number"] == e) for e in ("1.1", "1.2")}
                 print(f"{label}: {case.why}: scored 1.1 = {scores['1.1']}, 1.2 = {scores['1.2']} "
                       f"({seconds:.0f} s)", flush=True)

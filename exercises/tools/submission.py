@@ -32,7 +32,7 @@ import kit      # noqa: E402
 import regions  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
-CONFIG = "autograder.json"  # written into the zip: {"labs": [...], "hidden_visibility": ...}
+CONFIG = "autograder.json"  # written into the zip: {"labs": [...], "hidden_visibility": ..., "timeout": S or null}
 
 
 class SubmissionError(Exception):
@@ -125,9 +125,10 @@ def take_regions(submission, tree, labs):
     return missing
 
 
-def grade_one(submission, labs, work, say=print, hide=()):
+def grade_one(submission, labs, work, say=print, hide=(), timeout=None):
     """(results, notes) for one submission, built in work/src and work/build. The
-    sandbox covers `hide` (with the tree and its build) from the code it runs."""
+    sandbox covers `hide` (with the tree and its build) from the code it runs; each
+    test program run gets `timeout` seconds (None: what fits the build type)."""
     tree = work / "src"
     build.sync_tree(ROOT, tree)
     missing = take_regions(Path(submission), tree, labs)
@@ -135,7 +136,7 @@ def grade_one(submission, labs, work, say=print, hide=()):
     for note in notes:
         say(f"grade: {note}")
     results, problems, sandbox_notes = grade.grade(
-        tree, labs, work / "build", grade.time_limit(work / "build", None), True, say, quick=True, scratch=True,
+        tree, labs, work / "build", grade.time_limit(work / "build", timeout), True, say, quick=True, scratch=True,
         hide=[ROOT, work, *hide])
     broken = {r.exercise: r.hint for r in results if r.hint.startswith("your code does not compile")}
     notes += [f"exercise {ident}: {hint}" for ident, hint in sorted(broken.items())]
@@ -195,7 +196,8 @@ def gradescope(root):
     results_dir = root / "results"
     results_dir.mkdir(parents=True, exist_ok=True)
     lock_away(source, work, results_dir)
-    results, notes, sandbox_notes = grade_one(root / "submission", config["labs"], work, hide=[results_dir])
+    results, notes, sandbox_notes = grade_one(root / "submission", config["labs"], work, hide=[results_dir],
+                                              timeout=config.get("timeout"))
     data = grade.gradescope(results, grade.titles(ROOT), config.get("hidden_visibility", "after_published"), source)
     if notes:
         data["output"] = "\n".join(notes) + "\n\n" + data["output"]
@@ -208,7 +210,7 @@ def gradescope(root):
     return 0
 
 
-def folder(submissions, labs, csv_path, work):
+def folder(submissions, labs, csv_path, work, timeout=None):
     """Grades every submission (a subfolder or .zip) and writes one CSV row each:
     the points per exercise, the score, the maximum, and notes."""
     entries = sorted(p for p in Path(submissions).iterdir() if p.is_dir() or p.suffix == ".zip")
@@ -234,7 +236,8 @@ def folder(submissions, labs, csv_path, work):
                 except (zipfile.BadZipFile, OSError) as e:
                     path, notes = None, [f"unreadable zip: {e}"]
             if path is not None:
-                results, notes, sandbox_notes = grade_one(path, labs, work, say=lambda line: print(f"   {line}"))
+                results, notes, sandbox_notes = grade_one(path, labs, work, say=lambda line: print(f"   {line}"),
+                                                             timeout=timeout)
                 for note in sandbox_notes:
                     print(f"   note: {note}")
         points = [sum(r.passed for r in results if r.exercise == e) for e in exercises]
@@ -247,11 +250,24 @@ def folder(submissions, labs, csv_path, work):
     return 0
 
 
-def make_zip(out, labs, hidden_visibility):
+def unpack(archive, folder):
+    """The zip unpacked as Gradescope's unzip does it, with each file's mode (scripts
+    stay executable; Python's extractall drops the modes)."""
+    folder = Path(folder)
+    with zipfile.ZipFile(archive) as z:
+        z.extractall(folder)
+        for info in z.infolist():
+            mode = (info.external_attr >> 16) & 0o777
+            if mode and not info.is_dir():
+                os.chmod(folder / info.filename, mode)
+
+
+def make_zip(out, labs, hidden_visibility, timeout=None):
     """The zip Gradescope expects: the project (hidden tests included) at its root,
-    with setup.sh, run_autograder and the labs to grade."""
+    with setup.sh, run_autograder and the labs to grade (and the seconds each test
+    program may run, where the instructor sets them)."""
     here = ROOT / "exercises" / "autograder"
-    config = json.dumps({"labs": sorted(labs), "hidden_visibility": hidden_visibility})
+    config = json.dumps({"labs": sorted(labs), "hidden_visibility": hidden_visibility, "timeout": timeout})
     fd, temp = tempfile.mkstemp(prefix=f".{Path(out).name}.", dir=Path(out).resolve().parent)
     os.close(fd)
     try:
@@ -283,11 +299,13 @@ def main(argv):
     f.add_argument("--labs", required=True)
     f.add_argument("--csv", required=True)
     f.add_argument("--work", default=str(ROOT / "build" / "autograder"))
+    f.add_argument("--timeout", type=grade.positive_seconds, help="seconds per test program run")
     z = commands.add_parser("zip", help="make Gradescope's autograder zip")
     z.add_argument("out")
     z.add_argument("--labs", required=True)
     z.add_argument("--hidden-visibility", default="after_published",
                    choices=["hidden", "after_due_date", "after_published", "visible"])
+    z.add_argument("--timeout", type=grade.positive_seconds, help="seconds per test program run")
     try:
         args = parser.parse_args(argv)
         if args.command == "prepare":
@@ -296,8 +314,8 @@ def main(argv):
             return gradescope(Path(args.root))
         labs = sorted(regions.parse_labs(args.labs, grade.labs_in(ROOT)))
         if args.command == "zip":
-            return make_zip(args.out, labs, args.hidden_visibility)
-        return folder(args.submissions, labs, args.csv, Path(args.work).resolve())
+            return make_zip(args.out, labs, args.hidden_visibility, args.timeout)
+        return folder(args.submissions, labs, args.csv, Path(args.work).resolve(), args.timeout)
     except (kit.KitError, regions.RegionError) as e:
         print(f"submission: error: {e}", file=sys.stderr)
         return 2

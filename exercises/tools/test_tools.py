@@ -187,6 +187,23 @@ class BuildErrors(unittest.TestCase):
         self.assertIn('throw gi::NotImplemented("exercise 3.1 doubling", x);', (root / "lib" / "a.cpp").read_text())
 
 
+class TreeCopies(unittest.TestCase):
+    """build.sync_tree: the grading trees are copies of the project, kept up to date by
+    copying only what differs; a file's mode is part of it (exercises/grade is a script)."""
+
+    def test_the_copy_takes_the_text_and_the_mode(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            root, copy = Path(tmp) / "root", Path(tmp) / "copy"
+            (root / "exercises").mkdir(parents=True)
+            script = root / "exercises" / "grade"
+            script.write_text("#!/bin/sh\n")
+            script.chmod(0o644)
+            self.assertEqual(build.sync_tree(root, copy, [Path("exercises/grade")]), [Path("exercises/grade")])
+            script.chmod(0o755)  # the same text, made executable: copied without being "changed"
+            self.assertEqual(build.sync_tree(root, copy, [Path("exercises/grade")]), [])
+            self.assertEqual((copy / "exercises" / "grade").stat().st_mode & 0o777, 0o755)
+
+
 class Mutants(unittest.TestCase):
     TEXT = """# a comment
 == 3.1 triple
