@@ -5,13 +5,12 @@
 // tuned ray queries and local shading of accel/world_fast.cpp and raytrace/whitted_fast.cpp;
 // --plain-queries for the textbook's, the same picture), whose Tachyon twin is
 // lessons/scenes/s10.tachyon.dat. The two take turns, round after round (ours on
-// one thread, Tachyon on one, ours on N, Tachyon on N), so that a busy moment of a
-// shared machine falls on both. Each program's own clock of its render is read: ours
+// one thread, Tachyon on one, ours on N, Tachyon on N), so that anything else the
+// machine does falls on both alike. Each program's own clock of its render is read: ours
 // is the render loop's (lesson 02's `ms` column), Tachyon's the "Ray Tracing Time" it
 // prints; neither counts reading the scene or writing the image. Printed: medians,
 // fastest and slowest of --runs renders each, the ratio of the medians, N threads
-// against one, both programs' versions and the machine's load at the start and the
-// end. Needs `tachyon` on PATH; without it, one line and status 1. Tachyon writes
+// against one, both programs' versions and the processor. Needs `tachyon` on PATH; without it, one line and status 1. Tachyon writes
 // its image into a temporary folder, removed at the end. POSIX only (Linux, macOS):
 // not built for Windows.
 #include <algorithm>
@@ -74,13 +73,6 @@ double tachyon_ms(Tachyon& tachyon, int threads) {
   return 1e3 * report.ray_tracing_seconds;
 }
 
-// The 1-minute load average, the first number of /proc/loadavg.
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string one_minute;
-  return in >> one_minute ? one_minute : "unknown";
-}
-
 // "Intel(R) Xeon(R) ...", the first "model name" of /proc/cpuinfo.
 std::string processor() {
   std::ifstream in("/proc/cpuinfo");
@@ -131,7 +123,6 @@ int main(int argc, char** argv) {
       throw std::runtime_error("Tachyon's scene " + tachyon.scene + " is missing (moved since this was built?)");
   });
   return lesson.run(argc, argv, [&] {
-    const std::string load_at_start = load_average();
     const gi::platform::TemporaryFolder folder("gi_tachyon_bench_");
     tachyon.image = folder.path() / "s10.ppm";
     const gi::World world = gi::make_world(gi::make_scene("s10"), gi::acceleration_from_name(accel));
@@ -152,7 +143,6 @@ int main(int argc, char** argv) {
       progress.advance(4);
     }
     progress.finish();
-    const std::string load_at_end = load_average();
 
     const std::string picture =
         "s10 at " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + ", depth limit 8";
@@ -188,7 +178,6 @@ int main(int argc, char** argv) {
                fs::path(tachyon.scene).filename().string() + " at -res " + std::to_string(settings.width) + " " +
                std::to_string(settings.height) + ".");
     lesson.say("machine: " + processor() + ", " + std::to_string(gi::hardware_threads()) +
-               " hardware threads; load average (1 minute) " + load_at_start + " at the start, " + load_at_end +
-               " at the end.");
+               " hardware threads.");
   });
 }
