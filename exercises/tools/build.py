@@ -138,6 +138,14 @@ def ninja(build_dir):
     return bool(re.search(r"^CMAKE_GENERATOR:INTERNAL=Ninja", text, re.M)) and shutil.which("ninja") is not None
 
 
+def program(build_dir, name):
+    """A program of the build: bin/NAME, or bin/NAME.exe where programs are Windows'
+    (built on Windows, or by MinGW for it)."""
+    plain = Path(build_dir) / "bin" / name
+    exe = plain.with_name(name + ".exe")
+    return exe if os.name == "nt" or (exe.is_file() and not plain.is_file()) else plain
+
+
 def lab_targets(root, lab):
     """The programs of a lab: its visible tests, and its hidden ones where the tree has them."""
     folder = Path(root) / "exercises" / f"lab{lab:02d}"
@@ -177,7 +185,7 @@ def built_whole(build_dir, target, log):
     program is there and nothing on its way failed; otherwise: build it alone."""
     if ninja(build_dir):
         failed = {o for line in FAILED.findall(log) for o in line.split()}
-        return (Path(build_dir) / "bin" / target).is_file() and not failed & outputs_of(build_dir, target)
+        return program(build_dir, target).is_file() and not failed & outputs_of(build_dir, target)
     code, _ = run(["cmake", "--build", str(build_dir), "--target", target])
     return code == 0
 
@@ -326,7 +334,7 @@ def build(root, build_dir, labs, say=print, quick=False, scratch=False):
             return rebuilt_in_a_copy(root, build_dir, built, labs, quick)
     for lab, kind, name in targets:
         if code == 0 or built_whole(build_dir, name, log):
-            built.binaries[(lab, kind)] = build_dir / "bin" / name
+            built.binaries[(lab, kind)] = program(build_dir, name)
         else:
             built.lab_errors.setdefault(lab, first_error(log, root))
     return built
@@ -342,7 +350,7 @@ def rebuilt_with_overlay(root, build_dir, built, targets, log, reporter):
             objects = objects_to_rebuild(build_dir, name, files, failed)
             if not objects:
                 if built_whole(build_dir, name, log):
-                    built.binaries[(lab, kind)] = build_dir / "bin" / name
+                    built.binaries[(lab, kind)] = program(build_dir, name)
                 else:
                     built.lab_errors.setdefault(lab, first_error(log, root))
                 break

@@ -10,9 +10,14 @@ autograder and the grader take it only if it reads as statements of that functio
     marker: no `}` that ends the function, so no code at namespace scope (a global
     object whose constructor runs before main, a second definition of a function);
   - no `asm` and no `_Pragma`;
+  - no attribute but the standard ones a statement may carry (`[[maybe_unused]]`,
+    `[[likely]]`, `[[fallthrough]]`, ...), and no `__attribute__` or `__declspec`: a
+    static local marked `[[gnu::used, gnu::section(".preinit_array")]]` would run
+    before main, ahead of the harness that takes the grader's key;
   - every comment, string and character literal closed inside the region, and no
     line splice (`\\` at the end of a line) on its last line, so that nothing after
-    the END marker is swallowed.
+    the END marker is swallowed. A splice is read as GCC reads it: a backslash, then
+    spaces or tabs, then the end of the line.
 
 The same reading finds the parameters of the function a region sits in, which a
 kit's stub names so that it compiles without "unused parameter" warnings.
@@ -26,7 +31,12 @@ STRING_PREFIX = re.compile(r"(?:u8|u|U|L)?R?(?=[\"'])")
 # Longest first: a digraph or a three-character punctuator before its prefix.
 PUNCTUATORS = sorted("""%:%: ... <=> ->* <<= >>= :: -> ++ -- << >> <= >= == != && || += -= *= /= %= &= |= ^= .*
 <% %> <: :> %: ## # { } [ ] ( ) ; : ? . , ~ ! + - * / % ^ & | = < >""".split(), key=len, reverse=True)
-BANNED_WORDS = {"asm", "__asm", "__asm__", "_Pragma", "__pragma"}
+BANNED_WORDS = {"asm", "__asm", "__asm__", "_Pragma", "__pragma", "__attribute__", "__attribute", "__declspec"}
+# The attributes C++20 gives statements and local declarations; any other (a vendor's
+# gnu::section, gnu::constructor, gnu::used, ...) is refused.
+STANDARD_ATTRIBUTES = {"maybe_unused", "likely", "unlikely", "fallthrough", "nodiscard", "noreturn", "deprecated",
+                       "carries_dependency", "no_unique_address", "assume"}
+SPLICE = re.compile(r"\\[ \t]*(\r?\n)")  # GCC splices across trailing blanks (with a warning)
 OPEN, CLOSE = {"{", "<%"}, {"}", "%>"}
 
 
@@ -45,11 +55,9 @@ def spliced(text):
     """The text with line splices removed, and for each character left the line it came from."""
     chars, lines, line, k = [], [], 1, 0
     while k < len(text):
-        if text[k] == "\\" and text[k + 1:k + 2] == "\n":
-            k, line = k + 2, line + 1
-            continue
-        if text[k] == "\\" and text[k + 1:k + 3] == "\r\n":
-            k, line = k + 3, line + 1
+        splice = SPLICE.match(text, k) if text[k] == "\\" else None
+        if splice:
+            k, line = splice.end(), line + 1
             continue
         chars.append(text[k])
         lines.append(line)
@@ -115,7 +123,7 @@ def tokens(text):
 def check_body(text):
     """Raises TextError unless `text` reads as statements inside a function body."""
     lines = text.splitlines()
-    if lines and lines[-1].rstrip("\r").endswith("\\"):
+    if lines and lines[-1].rstrip(" \t\r").endswith("\\"):
         raise TextError(f"line {len(lines)}: a line splice (\\ at the end) on the region's last line")
     for number, line in enumerate(lines, 1):
         if "??=" in line or "??<" in line or "??>" in line:
@@ -124,7 +132,10 @@ def check_body(text):
             if "??" in code and '"' not in code:
                 raise TextError(f"line {number}: a trigraph (??=, ??<, ??>) stands for a preprocessor or brace token")
     depth = 0
-    for token in tokens(text):
+    found = tokens(text)
+    for k, token in enumerate(found):
+        if is_open_bracket(token) and k + 1 < len(found) and is_open_bracket(found[k + 1]):
+            check_attributes(found, k + 2)
         if token.kind == "punct" and token.text in ("#", "%:", "##", "%:%:"):
             raise TextError(f"line {token.line}: a preprocessor line ('{token.text}'): a region holds statements only")
         if token.kind == "word" and token.text in BANNED_WORDS:
@@ -140,6 +151,28 @@ def check_body(text):
                                 "code after it would run outside the function")
     if depth > 0:
         raise TextError(f"{depth} brace(s) opened in the region are not closed before its END marker")
+
+
+def is_open_bracket(token):
+    return token.kind == "punct" and token.text in ("[", "<:")
+
+
+def check_attributes(found, k):
+    """Raises TextError unless the attribute list [[ ... ]] from token k holds only
+    standard attributes (no namespace such as gnu::, no `using`)."""
+    depth = 0
+    for token in found[k:]:
+        if token.kind == "punct" and token.text in ("[", "<:", "(", "{", "<%"):
+            depth += 1
+        elif token.kind == "punct" and token.text in ("]", ":>", ")", "}", "%>"):
+            if depth == 0:
+                return
+            depth -= 1
+        elif depth == 0 and token.kind == "word" and token.text not in STANDARD_ATTRIBUTES:
+            raise TextError(f"line {token.line}: the attribute '{token.text}' is not allowed in a region "
+                            "(only the standard ones: " + ", ".join(sorted(STANDARD_ATTRIBUTES)) + ")")
+        elif depth == 0 and token.kind == "punct" and token.text == "::":
+            raise TextError(f"line {token.line}: a vendor's attribute ('::') is not allowed in a region")
 
 
 CONTROL = {"if", "for", "while", "switch", "catch", "return", "sizeof", "alignof", "decltype", "noexcept",

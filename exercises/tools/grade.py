@@ -159,7 +159,7 @@ def grade_lab(runner, build_dir, root, lab, limit, restubbed=None, together=Fals
     results, problems = [], []
     for kind, name in build.lab_targets(root, lab):
         tests = [(n, h) for n, h in source_tests(root, lab) if h == (kind == "hidden")]
-        found, problem = grade_program(runner, Path(build_dir) / "bin" / name, lab, tests, limit, restubbed or {},
+        found, problem = grade_program(runner, build.program(build_dir, name), lab, tests, limit, restubbed or {},
                                        kind == "hidden", together)
         results += found
         problems += [problem] if problem else []
@@ -295,7 +295,7 @@ def grade(root, labs, build_dir, limit, do_build, say=print, quick=False, scratc
     elif not (build_dir / "bin").is_dir():
         raise build.BuildError(f"no built tree in {build_dir}: build the graded tests first, or drop --no-build")
     else:
-        built.binaries = {(lab, kind): build_dir / "bin" / name for lab in labs
+        built.binaries = {(lab, kind): build.program(build_dir, name) for lab in labs
                           for kind, name in build.lab_targets(root, lab)}
     own_runner = runner is None
     runner = runner or gtest_run.Runner(hide=[root, build_dir] if hide is None else hide,

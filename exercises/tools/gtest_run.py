@@ -14,6 +14,8 @@ be had (a system without POSIX descriptors, or GI_SANDBOX_OFF=channel to test th
 path), gtest's JSON report is read instead, which the code under test could forge:
 good enough for grading your own work on your own machine, and said so.
 """
+from __future__ import annotations  # `int | None` in the dataclass below, on Python 3.9
+
 import hashlib
 import hmac
 import json

@@ -145,6 +145,14 @@ std::optional<Hit> never_called(const Ray& ray, const Plane& plane) {
   return std::nullopt;
 '''
 ASM = '  asm volatile("" ::: "memory");\n  (void)ray, (void)sphere;\n  return std::nullopt;\n'
+# A function-local entry in .preinit_array runs before main, ahead of the harness that
+# reads the signing key: it could read the key and sign a report of passes.
+PREINIT = r'''
+  [[gnu::used, gnu::section(".preinit_array")]] static void (*const early)(int, char**, char**) =
+      +[](int, char**, char**) { std::_Exit(0); };
+  (void)ray, (void)sphere;
+  return std::nullopt;
+'''
 # Put before the reference of 1.1: it answers right only if every way to the signing key
 # is shut, so a way found open costs the points the check counts.
 KEY_HUNT = r'''
@@ -200,6 +208,8 @@ CASES = [
          earns={"1.1": 0, "1.2": 0}, note="not taken"),
     Case("asm", "asm in 1.1 (refused); 1.2 is right and earns its points", sphere=ASM,
          earns={"1.1": 0, "1.2": "all"}, note="asm"),
+    Case("before-main", "an attribute that puts code in .preinit_array, to run before main, in 1.1 (refused); "
+         "1.2 is right and earns its points", sphere=PREINIT, earns={"1.1": 0, "1.2": "all"}, note="attribute"),
     Case("flood-and-memory", "output without end; a memory bomb", sphere=FLOOD, plane=MEMORY_BOMB,
          earns={"1.1": 0, "1.2": 0}, needs="limits"),
     Case("fork-bomb", "a fork bomb in 1.1; 1.2 is right and must still earn its points", sphere=FORK_BOMB,

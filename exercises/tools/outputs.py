@@ -12,7 +12,10 @@ what depends on the machine:
     speedup, efficiency, per second, x the bound) or a word listed after "skip:";
   - in other lines, a number followed by " ms", " s" or " us", or following a word
     listed after "skip:" ("ratio 110").
-Tables are compared cell by cell, so a wider time column does not matter.
+Tables are compared cell by cell, so a wider time column does not matter. A figure
+that legitimately differs between compilers or standard libraries (a floor of rounding
+noise) is compared by value within a stated tolerance: "| near: float 25%" after the
+skip words compares the column headed "float" within 25% of the larger value.
 
 Numbers in the prose that quote a lesson are checked too. A line
 
@@ -34,7 +37,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-MARKER = re.compile(r"^<!-- output: (\S+)((?: [^|]*?)?)(?: \| skip: (.+?))? -->\s*$")
+MARKER = re.compile(r"^<!-- output: (\S+)((?: [^|]*?)?)(?: \| skip: (.+?))?(?: \| near: (\S+) (\d+(?:\.\d+)?)%)? -->\s*$")
 TIME_COLUMN = re.compile(r"(^|\W)(ms|us|s)(\W|$)|Mrays/s|GB/s|speedup|efficiency|per second|x the bound")
 TIME_NUMBER = re.compile(r"\d+(\.\d+)?(?= (ms|s|us)\b)")
 NUMBER = r"-?\d+(\.\d+)?(e[-+]?\d+)?"
@@ -118,14 +121,16 @@ def quote_markers(doc_lines):
         yield i, [m.group(1)] + m.group(2).split(), derived, not_quotes, " ".join(doc_lines[i + 1:end])
 
 
-def normalise(lines, skip_words):
+def normalise(lines, skip_words, near=None):
     """The lines with every machine-dependent number replaced by '*'; table rows as
-    ' | '-joined cells, so that column widths do not matter."""
+    ' | '-joined cells, so that column widths do not matter; a cell of the column
+    `near` names (column, tolerance) marked with '~', to be compared by value."""
     out, columns, in_table = [], None, False
     for i, line in enumerate(lines):
         if i + 1 < len(lines) and re.fullmatch(r"-{3,}", lines[i + 1]) and line.strip():
             columns = [c for c in CELLS.split(line.strip())]
             skipped = [bool(TIME_COLUMN.search(c)) or c in skip_words for c in columns]
+            by_value = [bool(near) and c == near[0] for c in columns]
             out.append(" | ".join(columns))
             in_table = True
             continue
@@ -134,7 +139,7 @@ def normalise(lines, skip_words):
             continue
         cells = CELLS.split(line.strip()) if in_table and line.strip() else None
         if cells and len(cells) == len(columns):
-            out.append(" | ".join("*" if s else c for c, s in zip(cells, skipped)))
+            out.append(" | ".join("*" if s else "~" + c if v else c for c, s, v in zip(cells, skipped, by_value)))
             continue
         in_table = False
         masked = TIME_NUMBER.sub("*", line.rstrip())
@@ -156,7 +161,8 @@ def markers(doc_lines):
         if close is None:
             raise OutputError(f"line {i + 1}: the output block is not closed")
         skip = [w.strip() for w in (m.group(3) or "").split(",") if w.strip()]
-        yield i, [m.group(1)] + m.group(2).split(), skip, i + 2, close
+        near = (m.group(4), float(m.group(5)) / 100) if m.group(4) else None
+        yield i, [m.group(1)] + m.group(2).split(), skip, near, i + 2, close
 
 
 def run_lesson(bin_dir, command, cache):
@@ -175,11 +181,30 @@ def run_lesson(bin_dir, command, cache):
     return cache[key]
 
 
-def locate(block, output, skip):
+def same_line(a, b, near):
+    """Two normalised lines alike: equal, or equal but for '~' cells within the tolerance."""
+    if a == b:
+        return True
+    cells_a, cells_b = a.split(" | "), b.split(" | ")
+    if not near or len(cells_a) != len(cells_b):
+        return False
+    for x, y in zip(cells_a, cells_b):
+        if x == y:
+            continue
+        try:
+            u, v = float(x[1:]), float(y[1:])
+        except ValueError:
+            return False
+        if not (x[:1] == y[:1] == "~" and abs(u - v) <= near[1] * max(abs(u), abs(v))):
+            return False
+    return True
+
+
+def locate(block, output, skip, near=None):
     """Where the block's lines sit in the output (start, end), or None."""
-    want, have = normalise(block, skip), normalise(output, skip)
+    want, have = normalise(block, skip, near), normalise(output, skip, near)
     for start in range(len(have) - len(want) + 1):
-        if have[start:start + len(want)] == want:
+        if all(same_line(w, h, near) for w, h in zip(want, have[start:start + len(want)])):
             return start, start + len(want)
     return None
 
@@ -214,21 +239,22 @@ def process(root, bin_dir, fix):
         except OutputError as e:
             problems.append(f"{doc.name}: {e}")
             continue
-        for marker, command, skip, first, close in reversed(found):
+        for marker, command, skip, near, first, close in reversed(found):
             try:
                 output = run_lesson(bin_dir, command, cache)
             except (OutputError, subprocess.TimeoutExpired) as e:
                 problems.append(f"{doc.name}:{marker + 1}: {e}")
                 continue
             block = lines[first:close]
-            if locate(block, output, skip):
+            if locate(block, output, skip, near):
                 continue
             new = refreshed(block, output, skip) if fix else None
             if new is not None:
                 lines[first:close] = new
                 changed = True
                 continue
-            diff = "\n".join(difflib.unified_diff(normalise(block, skip), normalise(output, skip), "doc",
+            diff = "\n".join(difflib.unified_diff(normalise(block, skip, near), normalise(output, skip, near),
+                                                  "doc",
                                                   " ".join(command), lineterm="", n=1))
             problems.append(f"{doc.name}:{marker + 1}: output of {' '.join(command)} is stale\n{diff}")
         try:

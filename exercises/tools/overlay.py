@@ -24,8 +24,9 @@ import subprocess
 from pathlib import Path
 
 FOLDER = "grade-overlay"
-# "ar qc lib/x.a objects..." (also gcc-ar-12, llvm-ar): the archive it writes.
-ARCHIVE = re.compile(r"(?<![^\s/])(?:[\w.+]*-)?ar(?:-[\d.]+)?\s+[a-zA-Z]+\s+(\S+\.a)(?![^\s])")
+# "ar qc lib/x.a objects..." (also gcc-ar-12, llvm-ar, and quoted as CMake writes an
+# LTO build's archiver: "/usr/bin/gcc-ar-12" cr lib/x.a ...): the archive it writes.
+ARCHIVE = re.compile(r"(?<![^\s/])(?:[\w.+-]*-)?ar(?:-[\d.]+)?\"?\s+[a-zA-Z]+\s+(\S+\.a)(?![^\s])")
 
 
 # CMake's precompiled header on a compile line. GCC: -include DIR/cmake_pch.hxx (and

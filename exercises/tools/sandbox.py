@@ -162,7 +162,11 @@ def cover(lib, folders, missing):
 def set_limits(config, missing):
     if "limits" in switched_off():
         return
-    import resource  # POSIX only, as the rest of the sandbox's own process
+    try:
+        import resource  # POSIX only, as the rest of the sandbox's own process
+    except ImportError:
+        missing.append("limits")
+        return
     limits = [(resource.RLIMIT_FSIZE, MAX_FILE), (resource.RLIMIT_CORE, 0), (resource.RLIMIT_NOFILE, MAX_OPEN_FILES)]
     if config.get("memory"):
         limits.append((getattr(resource, "RLIMIT_DATA", resource.RLIMIT_AS), config["memory"]))
@@ -406,7 +410,9 @@ def run(config):
     if not in_pidns and "mount" not in missing and config.get("hide"):
         missing.append("mount")
     report_read, report_write = os.pipe()
-    said_read, said_write = os.pipe2(os.O_CLOEXEC)  # what the program's child could not set up
+    # What the program's child could not set up. Python's pipes are closed on exec
+    # already (PEP 446), so the program never holds this one; os.pipe2 is Linux's only.
+    said_read, said_write = os.pipe()
     first = os.fork()
     if first == 0:
         os.close(report_read)

@@ -49,6 +49,18 @@ class Outputs(unittest.TestCase):
         self.assertIn("+Jacobi | * | 5.5e-01", problems[0])
         self.assertEqual(len(self.check(make_tree(PRINTED.replace("571 elements", "570 elements")))), 1)
 
+    def test_a_near_column_compares_by_value_within_its_tolerance(self):
+        near = "<!-- output: 99_fake --flag | skip: ratio | near: error 25% -->"
+        # 5.5e-01 printed: 4.4e-01 is 20% below it, 4.0e-01 27%.
+        self.assertEqual(self.check(make_tree(PRINTED.replace("5.5e-01", "4.4e-01"), near)), [])
+        problems = self.check(make_tree(PRINTED.replace("5.5e-01", "4.0e-01"), near))
+        self.assertEqual(len(problems), 1)
+        self.assertIn("+Jacobi | * | ~5.5e-01", problems[0])
+        # Only that column: other numbers are compared as text, as without it.
+        self.assertEqual(len(self.check(make_tree(PRINTED.replace("571 elements", "570 elements"), near))), 1)
+        # Without the marker's tolerance, the same 20% is a stale block.
+        self.assertEqual(len(self.check(make_tree(PRINTED.replace("5.5e-01", "4.4e-01")))), 1)
+
     def test_fix_keeps_the_docs_times_and_adds_new_lines(self):
         old = PRINTED.replace("131 ms", "99 ms").replace("Gauss-Seidel  12.5  3.4e-01\n", "")
         root = make_tree(old.replace("5.5e-01", "5.0e-01"))

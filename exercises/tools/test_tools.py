@@ -71,6 +71,9 @@ class RegionText(unittest.TestCase):
         "  if (x) {\n    for (int i = 0; i < 3; ++i) { y += i; }\n  }\n  auto f = [&](int k) { return k; };\n",
         '  std::string hash = "#define"; auto q = u8"%:";\n',
         "  static const int table[] = {1, 2, 3};  // a static local: built on the first call, inside the function\n",
+        "  [[maybe_unused]] const int k = 1;\n  switch (k) { case 1: x = 1; [[fallthrough]]; default: break; }\n",
+        "  int a[2] = {0, 1};\n  a[a[0]] = 1;  // two brackets, not an attribute\n",
+        "  x = 1;  // a comment \\  \n  } as GCC reads it: the blanks after the backslash end the line, spliced\n",
     ]
     REFUSED = {
         "  return 1;\n}\nstatic int x = f();\nvoid g() {\n": "closes the function",
@@ -88,6 +91,15 @@ class RegionText(unittest.TestCase):
         "  if (x) {\n": "not closed",
         "  x = 1; \\\n": "line splice",
         "  import std;\n": "module",
+        '  [[gnu::used, gnu::section(".preinit_array")]] static void (*entry)() = forge;\n': "attribute 'gnu'",
+        "  [[using gnu: constructor]] static int y;\n": "attribute 'using'",
+        "  <:<:gnu::used:>:> static int w;\n": "attribute 'gnu'",
+        '  __attribute__((section(".init_array"))) static int z;\n': "__attribute__",
+        "  __declspec(allocate(\".CRT$XCU\")) static int v;\n": "__declspec",
+        "  x = 1; // \\ \t\n": "line splice",
+        # GCC splices the backslash-and-blanks: the first '{' is comment, the '}' closes
+        # the function, and the last '}' (comment too) leaves rest() open.
+        "  // \\ \n  {\n  }\n  int g = evil();\n  void rest() {\n  x = 1; // \\ \n  }\n": "closes the function",
     }
 
     def test_statements_are_accepted(self):
@@ -309,6 +321,22 @@ class CMakePrecompiledHeader(unittest.TestCase):
                          ["clang++", "-I/src/lib", "-include", "/src/own.hpp", "-c", "/src/lib/x.cpp"])
         plain = "c++ -I/src/lib -include /src/lib/gi/core/math.hpp -c /src/lib/x.cpp"
         self.assertEqual(overlay.without_cmake_pch(plain), plain, "a header of the project's own stays")
+
+
+class ArchiveCommands(unittest.TestCase):
+    """The overlay writes a library's archive again from the command that wrote it: it
+    must know that command however CMake wrote the archiver (an archive missed is an
+    old archive linked, and code graded that the student no longer has)."""
+
+    def test_every_archiver_is_found_quoted_or_not(self):
+        for command in ("/usr/bin/ar qc lib/gi/libgi_core.a a.o b.o",
+                        ': && /usr/bin/cmake -E rm -f lib/gi/libgi_core.a && "/usr/bin/gcc-ar-12" cr lib/gi/libgi_core.a '
+                        " a.o && /usr/bin/gcc-ranlib-12 lib/gi/libgi_core.a && :",
+                        "/usr/bin/llvm-ar-14 qc lib/gi/libgi_core.a a.o", "x86_64-w64-mingw32-ar qc lib/gi/libgi_core.a a.o"):
+            found = overlay.ARCHIVE.search(command)
+            self.assertIsNotNone(found, command)
+            self.assertEqual(found.group(1), "lib/gi/libgi_core.a", command)
+        self.assertIsNone(overlay.ARCHIVE.search("/usr/bin/c++ -o bin/star a.o lib/gi/libgi_core.a"))
 
 
 MACRO = re.compile(r"\b(EXPECT|ASSERT)_[A-Z_]+\s*\(")

@@ -8,9 +8,11 @@ cannot be made, /proc/gi_campaign, so an accepted command line stops there, befo
 any work). Never a crash, a hang, a traceback, a NaN, a second line, or a quote from
 a file that is not the user's scene.
 
-Usage: campaign.py BIN_DIR WORK_DIR [--quick]
-(every program but the Tachyon and Embree benches, or with --quick lessons 01, 08, 11, 14)
-Prints one line per failure and a summary; exit status 1 if anything failed.
+Usage: campaign.py BIN_DIR WORK_DIR [--quick] [--emulator COMMAND...]
+(every program but the Tachyon and Embree benches, or with --quick lessons 01, 08, 11, 14;
+a cross build's programs run through its emulator, as ctest runs them: qemu-aarch64,
+wine). Prints one line per failure and a summary; exit status 1 if anything failed,
+or if no lesson was found to run.
 """
 import os
 import re
@@ -28,9 +30,19 @@ NOT_NUMBERS = ["nan", "inf", "-inf", "abc", "", "0x10", "1e", " 5", "5 ", "+5", 
 SUBNORMAL = ["-1e-320", "4.9e-324"]
 
 
+EMULATOR = []  # the words that run a cross build's program (--emulator), or none
+
+
+def program(bin_dir, lesson):
+    """The argv that runs a lesson: its file (lesson.exe for Windows) through the emulator."""
+    path = Path(bin_dir) / lesson
+    exe = path.with_name(lesson + ".exe")
+    return EMULATOR + [str(exe if exe.is_file() and not path.is_file() else path)]
+
+
 def options_of(binary):
     """(name, kind, range) from --help: kind is int, real, seed, choice, text, parsed or flag."""
-    text = subprocess.run([binary, "--help"], capture_output=True, text=True, timeout=30).stdout
+    text = subprocess.run(binary + ["--help"], capture_output=True, text=True, timeout=30).stdout
     found = []
     for line in text.splitlines():
         m = re.match(r"^  (--[a-z0-9-]+)( VALUE)?\s+(.*)$", line)
@@ -65,9 +77,8 @@ class Campaign:
         """expect: "refuse" (status 2, one line, not the sentinel), "accept" (the
         sentinel's line), "either" (one of the two), or "fail" (status 1 or 2, one line)."""
         self.runs += 1
-        binary = str(self.bin / lesson)
         try:
-            p = subprocess.run([binary] + args, capture_output=True, timeout=60, env=env, cwd=self.work)
+            p = subprocess.run(program(self.bin, lesson) + args, capture_output=True, timeout=60, env=env, cwd=self.work)
         except subprocess.TimeoutExpired:
             self.fail(f"{lesson} {args!r}: still running after 60 s ({why})")
             return
@@ -152,7 +163,7 @@ class Campaign:
             self.run(lesson, [name, "", "--out", SENTINEL], "refuse", "empty")
 
     def options(self, lesson):
-        opts = options_of(str(self.bin / lesson))
+        opts = options_of(program(self.bin, lesson))
         for name, kind, rng in opts:
             if kind in ("int", "real", "seed"):
                 self.numeric(lesson, name, kind, rng)
@@ -261,12 +272,16 @@ class Campaign:
 
 
 def main():
-    bin_dir, work = sys.argv[1], Path(sys.argv[2])
-    quick = "--quick" in sys.argv
+    argv = sys.argv[1:]
+    if "--emulator" in argv:
+        EMULATOR[:] = argv[argv.index("--emulator") + 1:]
+        argv = argv[:argv.index("--emulator")]
+    bin_dir, work = argv[0], Path(argv[1])
+    quick = "--quick" in argv
     work.mkdir(parents=True, exist_ok=True)
     c = Campaign(bin_dir, work)
-    lessons = sorted(p.name for p in Path(bin_dir).iterdir()
-                     if re.match(r"^\d\d_", p.name) and os.access(p, os.X_OK) and p.is_file())
+    lessons = sorted(p.name.removesuffix(".exe") for p in Path(bin_dir).iterdir()
+                     if re.match(r"^\d\d_", p.name) and p.is_file() and (os.access(p, os.X_OK) or p.suffix == ".exe"))
     if quick:
         lessons = [l for l in lessons if l in ("01_rays", "08_radiosity_system", "11_progressive", "14_path_tracing")]
     # The benches beside lessons 02 and 05 (Tachyon, Embree) are measurements, not
@@ -275,7 +290,10 @@ def main():
     for lesson in lessons:
         c.options(lesson)
         c.outs(lesson)
-    scene_lessons = [l for l in lessons if "--scene" in [o[0] for o in options_of(str(Path(bin_dir) / l))]
+    if not lessons:
+        print(f"bad-input campaign: no lesson found in {bin_dir}: nothing was checked")
+        return 1
+    scene_lessons = [l for l in lessons if "--scene" in [o[0] for o in options_of(program(bin_dir, l))]
                      and l not in ("14_path_tracing", "14_make_reference", "16_two_pass")]
     c.scenes(scene_lessons)
     print(f"bad-input campaign: {c.runs} runs over {len(lessons)} programs; {c.refused} refused in one line, "

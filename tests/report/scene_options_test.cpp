@@ -51,7 +51,8 @@ SceneRun run_with_scene(const std::vector<std::string>& args, const std::functio
   gi::SceneChanges changes;
   lesson.add_scene(choice, {"one", "two"}, load);
   lesson.add_scene_changes(changes);
-  std::vector<const char*> argv{"01_x", "--out", out.c_str()};
+  const std::string out_arg = out.string();  // a path's c_str() is wchar_t* on Windows
+  std::vector<const char*> argv{"01_x", "--out", out_arg.c_str()};
   for (const std::string& a : args) argv.push_back(a.c_str());
   bool worked = false;
   testing::internal::CaptureStderr();
