@@ -315,7 +315,10 @@ def grade(root, labs, build_dir, limit, do_build, say=print, quick=False, scratc
                                                          built.restubbed, kind == "hidden")
                     problem = f"lab {lab}: {problem}" if problem else ""
                 by_lab.setdefault(lab, []).extend(lab_results)
-                if problem and problem not in problems:
+                # A hidden program's problem stays with its tests, hidden as they are: a
+                # line of its own would show a student, before publication, that the hidden
+                # program failed and how (an exit status the submission could choose).
+                if problem and kind == "graded" and problem not in problems:
                     problems.append(problem)
     finally:
         if own_runner:

@@ -192,6 +192,23 @@ class FakePrograms(unittest.TestCase):
         self.assertIn("SIGSEGV", problem)
         self.assertFalse(found["Ex99_1_A.One"].passed)
 
+    def test_a_hidden_programs_problem_stays_with_the_hidden_tests(self):
+        root, build_dir = Path(self.folder) / "root", Path(self.folder) / "build"
+        (root / "exercises" / "lab99" / "hidden").mkdir(parents=True)
+        (root / "exercises" / "lab99" / "a_test.cpp").write_text("TEST(Ex99_1_A, One) {}\n")
+        (root / "exercises" / "lab99" / "hidden" / "b_test.cpp").write_text("TEST(Ex99_1_A, Hidden) {}\n")
+        (build_dir / "bin").mkdir(parents=True)
+        fake_program(build_dir / "bin", {"Ex99_1_A.Hidden": "pass"}, startup="crash").rename(build_dir / "bin" /
+                                                                                          "lab99_hidden")
+        fake_program(build_dir / "bin", {"Ex99_1_A.One": "pass"})  # lab99_graded
+        with gtest_run.Runner() as runner:
+            results, problems, _ = grade.grade(root, [99], build_dir, 1.5, False, say=lambda line: None, runner=runner)
+        found = {r.name: r for r in results}
+        self.assertTrue(found["Ex99_1_A.One"].passed)
+        self.assertFalse(found["Ex99_1_A.Hidden"].passed)
+        self.assertIn("SIGSEGV", found["Ex99_1_A.Hidden"].hint, "the instructor reads why, with the hidden test")
+        self.assertEqual(problems, [], "no line a student sees says that, or how, the hidden program failed")
+
     def test_output_that_is_not_utf8_is_no_trouble(self):
         tests = {"Ex99_1_A.Bytes": "bytes", "Ex99_1_A.Good": "pass"}
         found, _, _ = results_of(fake_program(self.folder, tests), tests)
