@@ -199,6 +199,38 @@ class BuildErrors(unittest.TestCase):
         self.assertIn('throw gi::NotImplemented("exercise 3.1 doubling", x);', (root / "lib" / "a.cpp").read_text())
 
 
+class OlderPython(unittest.TestCase):
+    """The tools a student runs on their own machine run on Python 3.9, macOS's own:
+    no syntax of a later Python, and no `X | None` evaluated at run time (in an
+    annotation it is, unless the module postpones them with `from __future__ import
+    annotations`)."""
+
+    LATER = {"itertools.pairwise": "3.10", "contextlib.chdir": "3.11", "datetime.UTC": "3.11", ".bit_count": "3.10",
+             "tomllib": "3.11", "typing.Self": "3.11", "asyncio.TaskGroup": "3.11"}
+
+    def test_the_tools_read_as_python_3_9(self):
+        import ast
+        for path in sorted(Path(__file__).resolve().parent.glob("*.py")) + [ROOT / "tests/bad_input/campaign.py"]:
+            text = path.read_text()
+            tree = ast.parse(text, str(path), feature_version=(3, 9))  # SyntaxError for match, with (...), ...
+            postponed = "from __future__ import annotations" in text
+            for node in ast.walk(tree):
+                annotation = getattr(node, "annotation", None) or getattr(node, "returns", None)
+                if not postponed and isinstance(annotation, ast.BinOp) and isinstance(annotation.op, ast.BitOr):
+                    self.fail(f"{path.name}:{node.lineno}: 'X | Y' in an annotation needs Python 3.10")
+                if isinstance(node, ast.keyword) and node.arg == "strict":
+                    self.fail(f"{path.name}:{node.lineno}: zip(..., strict=) needs Python 3.10")
+                names = []
+                if isinstance(node, ast.Attribute):
+                    names = ["." + node.attr] + ([f"{node.value.id}.{node.attr}"] if isinstance(node.value, ast.Name)
+                                                 else [])
+                elif isinstance(node, ast.alias):
+                    names = [node.name]
+                for name in names:
+                    if name in self.LATER:
+                        self.fail(f"{path.name}: {name.lstrip('.')} needs Python {self.LATER[name]}")
+
+
 class TreeCopies(unittest.TestCase):
     """build.sync_tree: the grading trees are copies of the project, kept up to date by
     copying only what differs; a file's mode is part of it (exercises/grade is a script)."""
