@@ -18,16 +18,18 @@
 # The first target of a kind makes the precompiled header; the others reuse it (they
 # are compiled with the same flags).
 #
-# On by default in Release builds (-DGI_PCH=ON/OFF to choose; the trees the grader and
-# the mutant suite build at -O1 turn it on). GCC reports, inside the standard library's
-# headers read from a precompiled header, false warnings that it keeps quiet when it
-# reads them as text; cmake/Warnings.cmake silences those where headers are
-# precompiled. The sanitizer build, which treats warnings as errors in CI, reads every
-# header as text and keeps every warning. Off on a Windows host, where GCC's
-# precompiled headers can fail to load at another address ("had to relocate PCH").
+# On by default in Release builds and in every Clang build (-DGI_PCH=ON/OFF to choose;
+# the trees the grader and the mutant suite build at -O1 turn it on). GCC reports,
+# inside the standard library's headers read from a precompiled header, false warnings
+# that it keeps quiet when it reads them as text; cmake/Warnings.cmake silences those
+# where headers are precompiled. GCC's sanitizer build, which treats warnings as errors
+# in CI, reads every header as text and keeps every warning; Clang warns alike either
+# way, so its sanitizer build (CI's) reads them precompiled. Off on a Windows host,
+# where GCC's precompiled headers can fail to load at another address ("had to
+# relocate PCH").
 # The mutant suite compiles a mutated file with a precompiled preamble of its own in
 # place of this one (exercises/tools/overlay.py, without_cmake_pch).
-if(CMAKE_BUILD_TYPE STREQUAL "Release" AND NOT CMAKE_HOST_WIN32)
+if((CMAKE_BUILD_TYPE STREQUAL "Release" OR CMAKE_CXX_COMPILER_ID MATCHES "Clang") AND NOT CMAKE_HOST_WIN32)
   option(GI_PCH "Precompiled headers for the library, the lessons and the tests" ON)
 else()
   option(GI_PCH "Precompiled headers for the library, the lessons and the tests" OFF)
