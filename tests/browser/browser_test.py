@@ -4,8 +4,15 @@
 Runs every lesson small into a scratch folder, then checks that
   - every report page (index.html) and out/index.html load with no console error,
     show all their images, fit a window 1280 px wide (nothing overflows sideways),
-    link the lesson's chapter (docs/NN_topic.md, a file that exists) and its lab,
-    and that out/index.html links each lesson's page, chapter and lab;
+    link the lesson's chapter (its page chapter.html where the book made one, else
+    docs/NN_topic.md, a file that exists) and its lab, and that out/index.html links
+    each lesson's page, chapter and lab;
+  - every chapter page the book made (docs/book/make_book.py, run here before the
+    lessons, as the `lessons` target does) and its front page load with no console
+    error and fit the window; outside code no raw Markdown survives (no `$`, `![` or
+    `](`), every image loads, every equation is typeset (KaTeX's, none in error),
+    every link of the contents lands on a heading and every link to a file names one
+    that exists; the chapter link of a lesson's page opens its chapter page;
   - every false-colour picture has its colour bar: each figure the page marks as
     false colour shows a bar with its values and quantity, and every PNG whose
     pixels lie on the false-colour ramp (black, blue, green, yellow, red; read here
@@ -137,6 +144,63 @@ def linked_file(href):
     return Path(unquote(urlparse(href).path))
 
 
+def chapter_of(out, lesson):
+    """What a lesson's chapter link should open: the book's page, or the Markdown."""
+    page = out / lesson / "chapter.html"
+    return page if page.is_file() else Path(__file__).resolve().parents[2] / "docs" / f"{lesson}.md"
+
+
+# What a chapter page shows a reader outside its code and equations, and what of it
+# still reads as Markdown: a dollar, a picture's or a link's brackets.
+PAGE_TEXT = """(() => {
+    const main = document.querySelector('main').cloneNode(true);
+    main.querySelectorAll('pre, code, .katex').forEach((e) => e.remove());
+    return main.textContent;
+})()"""
+RAW_MARKDOWN = re.compile(r"\$|!\[|\]\(")
+
+
+def chapter_pages(browser, out):
+    pages = sorted(out.glob("*/chapter.html"))
+    if not pages:
+        print("chapter pages not checked: the book made none (it says why above)")
+        return
+    page = Page(browser, PAGE_WIDTH, 900)
+    for path in [*pages, out / "book" / "index.html"]:
+        what = str(path.relative_to(out))
+        page.open(path.as_uri())
+        raw = RAW_MARKDOWN.findall(page.evaluate(PAGE_TEXT))
+        check(not raw, f"{what}: Markdown left as text: {raw[:5]}")
+        images = page.evaluate("Array.from(document.images).map((i) => [i.getAttribute('src'), i.naturalWidth > 0])")
+        for src, shown in images:
+            check(shown, f"{what}: the image {src} does not load")
+        maths = page.evaluate("""[document.querySelectorAll('.katex').length,
+            document.querySelectorAll('.katex-error').length,
+            Array.from(document.querySelectorAll('.katex-html'))
+                .filter((e) => e.getBoundingClientRect().width == 0).length]""")
+        check(maths[1] == 0 and maths[2] == 0,
+              f"{what}: of {maths[0]} equations {maths[1]} in error, {maths[2]} not drawn")
+        check(page.evaluate("getComputedStyle(document.querySelector('nav.sidebar')).position") == "sticky",
+              f"{what}: the book's style sheet did not load")
+        missing = page.evaluate("""Array.from(document.querySelectorAll('ol.toc a'))
+            .map((a) => a.getAttribute('href')).filter((h) => !document.getElementById(h.slice(1)))""")
+        check(not missing, f"{what}: contents links to no heading: {missing}")
+        for _, _, href in page_links(page):
+            if href.startswith("file:"):
+                check(linked_file(href).exists(), f"{what}: links {href}, which does not exist")
+        overflow = page.evaluate("document.documentElement.scrollWidth - window.innerWidth")
+        check(overflow <= 0, f"{what}: {overflow} px wider than a {PAGE_WIDTH} px window")
+        (out / f"chapter_{path.parent.name}.png").write_bytes(page.full_page_screenshot(PAGE_WIDTH))
+    no_errors(page, "the chapter pages")
+    # A student reaches a chapter from the lesson's page.
+    lesson = pages[0].parent.name
+    page.open((out / lesson / "index.html").as_uri())
+    page.open(page.evaluate("document.querySelector('a.doc').href"))
+    check(page.evaluate("location.pathname").endswith(f"/{lesson}/chapter.html")
+          and page.evaluate("document.querySelector('main h1') !== null"),
+          f"{lesson}/index.html: its chapter link does not open the chapter page")
+
+
 def report_pages(browser, out):
     page = Page(browser, PAGE_WIDTH, 900)
     for lesson in LESSONS:
@@ -152,8 +216,8 @@ def report_pages(browser, out):
               f"{what}: no 'what this shows' at the top")
         links = page_links(page)
         docs = [href for kind, _, href in links if kind == "doc"]
-        check(len(docs) == 1 and linked_file(docs[0]).name == lesson + ".md" and linked_file(docs[0]).is_file(),
-              f"{what}: no link to its chapter docs/{lesson}.md that opens: {docs}")
+        check(len(docs) == 1 and linked_file(docs[0]) == chapter_of(out, lesson) and linked_file(docs[0]).is_file(),
+              f"{what}: no link to its chapter {chapter_of(out, lesson)} that opens: {docs}")
         for kind, _, href in links:
             if kind == "lab":
                 check(linked_file(href).is_file(), f"{what}: its lab link {href} names no file")
@@ -178,7 +242,7 @@ def report_pages(browser, out):
     hrefs = [href for _, href, _ in links]
     for lesson in LESSONS:
         check(f"{lesson}/index.html" in hrefs, f"out/index.html does not link {lesson}'s page")
-        check(any(kind == "doc" and linked_file(url).name == lesson + ".md" and linked_file(url).is_file()
+        check(any(kind == "doc" and linked_file(url) == chapter_of(out, lesson) and linked_file(url).is_file()
                   for kind, _, url in links), f"out/index.html does not link {lesson}'s chapter")
     for lesson in VIEWERS:
         check(f"{lesson}/viewer.html" in hrefs, f"out/index.html does not link {lesson}'s viewer")
@@ -332,6 +396,11 @@ def main():
         sys.exit(77)
     out = work / "browser_out"
     shutil.rmtree(out, ignore_errors=True)
+    book = Path(__file__).resolve().parents[2] / "docs" / "book" / "make_book.py"
+    made = subprocess.run([sys.executable, str(book), "--out", str(out)], capture_output=True, text=True)
+    if made.returncode != 0:
+        sys.exit(f"the book: {made.stderr.strip()}")
+    print(made.stdout.strip())
     for lesson, args in LESSONS.items():
         run = subprocess.run([str(bin_dir / lesson), *args, "--out", str(out / lesson)], capture_output=True, text=True)
         if run.returncode == 3:  # a student kit: the lesson stops at an exercise still to be written
@@ -343,6 +412,7 @@ def main():
         browser = Browser(chromium, profile)
         try:
             report_pages(browser, out)
+            chapter_pages(browser, out)
             progressive_viewer(browser, out, update)
             relighting_viewer(browser, out)
             curves_viewer(browser, out, "09_jacobi_gauss_seidel", 3)  # Jacobi, Gauss-Seidel, SOR

@@ -213,6 +213,27 @@ TEST(LessonsIndex, ListsEveryRecordInFolderOrderAndSaysWhichCannotBeRead) {
   at(gi_test::file_text(out / "index.html"), "<a href=\"08_a/index.html\">08_a</a>");
 }
 
+// Where the book has made a chapter's page beside the lesson's (docs/book/make_book.py),
+// the lesson's page and the index link it; elsewhere they link the Markdown, never a
+// page that is not there.
+TEST(ReportPage, LinksTheChapterPageWhereTheBookMadeOne) {
+  const fs::path out = scratch("book");
+  const gi::LessonGuide guide = gi::read_guide(gi::doc_openings().front().contents, gi::doc_openings().front().name);
+  const fs::path folder = out / guide.lesson;
+  fs::create_directories(folder);
+  const gi::RunSummary run{guide.lesson, "", "complete", {}, true, folder, guide};
+  at(gi::report_page(run, {}), "<a class=\"doc\" href=\"" + gi::source_link(folder, guide.doc) + "\">");
+  EXPECT_EQ(gi::lessons_index_page(out).find(guide.lesson + "/chapter.html"), std::string::npos);
+  EXPECT_EQ(gi::lessons_index_page(out).find("book/index.html"), std::string::npos);
+  std::ofstream(folder / "chapter.html") << "page";
+  fs::create_directories(out / "book");
+  std::ofstream(out / "book" / "index.html") << "front page";
+  at(gi::report_page(run, {}), "<a class=\"doc\" href=\"chapter.html\">Read the chapter: " + guide.doc + "</a>");
+  const std::string index = gi::lessons_index_page(out);
+  at(index, "<a class=\"doc\" href=\"" + guide.lesson + "/chapter.html\">");
+  at(index, "href=\"book/index.html\"");
+}
+
 // The index is the course's table of contents: every lesson with a doc has its row,
 // its title, the first sentence of what it shows and links to its chapter and lab,
 // whether or not it has run.

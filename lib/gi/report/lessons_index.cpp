@@ -104,6 +104,8 @@ std::string lessons_index_page(const fs::path& folder) {
      << "<p class=\"summary\">Global illumination, ray tracing and radiosity, one lesson at a time: what each shows, "
      << "whether it has run here (" << html_escape(fs::absolute(folder).lexically_normal().string())
      << "), and its chapter and lab.</p>\n";
+  if (fs::is_regular_file(folder / "book" / "index.html", error))
+    os << "<p class=\"links\"><a class=\"book\" href=\"book/index.html\">The course book: every chapter</a></p>\n";
   if (rows.empty()) os << "<p>No lesson has run here yet.</p>\n";
   else
     os << "<div class=\"table\"><table class=\"contents\">\n<thead><tr><th>lesson</th><th>what it shows</th>"
@@ -121,7 +123,12 @@ std::string lessons_index_page(const fs::path& folder) {
       const std::string status = shown_status(r);
       os << "<td class=\"" << status_class(status) << "\">" << html_escape(status) << "</td>";
     }
-    os << "<td>" << (guide ? "<a class=\"doc\" href=\"" + html_escape(source_link(folder, guide->doc)) + "\">" +
+    // The chapter as a page where the book has made one (docs/book/), else its Markdown.
+    const std::string chapter = !guide ? ""
+                                : fs::is_regular_file(folder / r.folder / "chapter.html", error)
+                                    ? base + "chapter.html"
+                                    : html_escape(source_link(folder, guide->doc));
+    os << "<td>" << (guide ? "<a class=\"doc\" href=\"" + chapter + "\">" +
                                  html_escape(guide->doc.substr(5)) + "</a>"
                            : "")
        << "</td><td>"

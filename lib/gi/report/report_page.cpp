@@ -74,6 +74,12 @@ std::string source_link(const std::filesystem::path& folder, const std::string& 
   return url_path((link.empty() ? file : link).generic_string());
 }
 
+std::string chapter_link(const std::filesystem::path& folder, const std::string& doc) {
+  std::error_code error;
+  if (std::filesystem::is_regular_file(folder / "chapter.html", error)) return "chapter.html";
+  return source_link(folder, doc);
+}
+
 namespace {
 
 std::string number(double v, int digits = 4) {
@@ -249,7 +255,7 @@ void header_html(std::ostream& os, const RunSummary& run, const std::vector<Outp
      << "<h2>What this shows</h2>\n<p>" << (guide ? markdown_inline_html(guide->shows) : html_escape(run.summary))
      << "</p>\n</section>\n<p class=\"links\">";
   if (guide) {
-    os << "<a class=\"doc\" href=\"" << html_escape(source_link(run.folder, guide->doc)) << "\">Read the chapter: "
+    os << "<a class=\"doc\" href=\"" << html_escape(chapter_link(run.folder, guide->doc)) << "\">Read the chapter: "
        << html_escape(guide->doc) << "</a>";
     if (!guide->lab.empty())
       os << " <a class=\"lab\" href=\"" << html_escape(source_link(run.folder, guide->lab)) << "\">The lab: "

@@ -41,5 +41,9 @@ int shown_width(int width);
 // The link from a page in `folder` to a file of the source tree ("docs/01_rays.md"):
 // relative when the two share a root, as out/ and docs/ do.
 std::string source_link(const std::filesystem::path& folder, const std::string& relative);
+// The link from a page in `folder` to a lesson's chapter (guide.doc, "docs/06_x.md"):
+// the chapter as a page, chapter.html, where the book (docs/book/make_book.py) has put
+// one in that folder, else the Markdown itself.
+std::string chapter_link(const std::filesystem::path& folder, const std::string& doc);
 
 }  // namespace gi
