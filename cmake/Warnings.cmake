@@ -14,6 +14,11 @@ target_compile_options(gi_flags INTERFACE -ffp-contract=off)
 if(GI_PORTABLE_SIMD)
   target_compile_definitions(gi_flags INTERFACE GI_PORTABLE_SIMD)
 endif()
+# Library, lessons, tests and exercises alike: gi::wide is part of the library's
+# interface (quadrature.hpp), so every file must agree on what it is.
+if(GI_WIDE_IS_DOUBLE)
+  target_compile_definitions(gi_flags INTERFACE GI_WIDE_IS_DOUBLE)
+endif()
 if(GI_WERROR)
   target_compile_options(gi_flags INTERFACE -Werror)
 endif()

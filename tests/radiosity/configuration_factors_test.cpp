@@ -15,11 +15,11 @@
 #include "gi/radiosity/form_factors/quadrature.hpp"
 
 using gi::vec3;
-using ld = long double;
+using ld = gi::wide;
 
 namespace {
 
-const ld pi_ld = std::numbers::pi_v<ld>;
+const ld pi_ld = gi::pi_wide;
 
 // The double area integral F_12 = 1/A_1 ∫∫ cos θ1 cos θ2 / (π r²) dA_2 dA_1 by the
 // midpoint rule on n x n cells per rectangle: an independent check of the closed forms
@@ -41,7 +41,7 @@ double integrate(vec3 o1, vec3 u1, vec3 v1, vec3 o2, vec3 u2, vec3 v2, int n) {
 }
 
 // The same integral, for rectangles far apart, by a Gauss-Legendre rule of order 12 in
-// each of the four coordinates, summed in long double: the kernel is smooth and
+// each of the four coordinates, summed in gi::wide: the kernel is smooth and
 // positive there, so nothing cancels and the rule is exact to round-off. `kernel`
 // takes a point of each rectangle in the rectangles' own coordinates.
 ld gauss_4d(const std::array<double, 8>& box, const std::function<ld(ld, ld, ld, ld)>& kernel) {
@@ -65,20 +65,39 @@ ld parallel_by_gauss(double a, double b, double c) {
   });
 }
 
-// The textbook forms, in long double (3 more digits than double for their cancellation).
-ld parallel_textbook(ld a, ld b, ld c) {
-  const ld x = a / c, y = b / c, x2 = 1 + x * x, y2 = 1 + y * y;
-  return 2 / (pi_ld * x * y) *
-         (0.5L * std::log(x2 * y2 / (x2 + y * y)) + x * std::sqrt(y2) * std::atan(x / std::sqrt(y2)) +
-          y * std::sqrt(x2) * std::atan(y / std::sqrt(x2)) - x * std::atan(x) - y * std::atan(y));
-}
-ld perpendicular_textbook(ld l, ld w, ld h) {
-  const ld W = w / l, H = h / l, w2 = W * W, h2 = H * H, s = w2 + h2;
-  const ld logs = std::log((1 + w2) * (1 + h2) / (1 + s)) + w2 * std::log(w2 * (1 + s) / ((1 + w2) * s)) +
-                  h2 * std::log(h2 * (1 + s) / ((1 + h2) * s));
-  return (W * std::atan(1 / W) + H * std::atan(1 / H) - std::sqrt(s) * std::atan(1 / std::sqrt(s)) + logs / 4) /
-         (pi_ld * W);
-}
+// The textbook forms' values, computed once with Python's mpmath at 50 digits (the
+// forms as Howell prints them, whose cancellation costs nothing at that precision) and
+// rounded to 20: the directly opposed a x b rectangles c apart, {a, b, c / a, F} ...
+struct ParallelValue {
+  double a, b, c_over_a;
+  ld F;
+};
+constexpr ParallelValue parallel_textbook[] = {
+    {1.0, 1.0, 0.0001, 0.99980007097778848714L},
+    {1.0, 1.0, 0.01, 0.98041660292597326744L},
+    {1.0, 1.0, 0.3, 0.57953076066913190395L},
+    {1.0, 1.0, 1.0, 0.19982489569838738304L},
+    {1.0, 1.0, 2.0, 0.068589588818552447785L},
+    {1.0, 1.0, 3.0, 0.032971397219497298148L},
+    {1.0, 1.0, 10.0, 0.0031620568387576016251L},
+    {2.0, 0.3, 0.0001, 0.99923390853836449692L},
+    {2.0, 0.3, 0.01, 0.92712873913294722986L},
+    {2.0, 0.3, 0.3, 0.19149194801653993376L},
+    {2.0, 0.3, 1.0, 0.03724743217417166116L},
+    {2.0, 0.3, 2.0, 0.011048794809324570079L},
+    {2.0, 0.3, 3.0, 0.0051166300653029837986L},
+    {2.0, 0.3, 10.0, 0.0004758471340273463176L},
+};
+// ... and the perpendicular rectangles sharing an edge of length 1, F[w][h] from the one of
+// width W = perpendicular_ratios[w] to the one of height H = perpendicular_ratios[h].
+constexpr double perpendicular_ratios[] = {0.01, 0.1, 1.0, 10.0, 100.0};
+constexpr ld perpendicular_textbook[5][5] = {
+    {0.29179006733692164944L, 0.47060041563641600304L, 0.4895849268506683038L, 0.49027536206913443456L, 0.4902832270260357069L},
+    {0.047060041563641598671L, 0.28188780678790142968L, 0.43251369400685855234L, 0.43938730070715551218L, 0.43946594635079324487L},
+    {0.0048958492685066831399L, 0.043251369400685857635L, 0.20004377607540315424L, 0.24920948579031059959L, 0.2499920427833167927L},
+    {0.00049027536206913444477L, 0.0043938730070715553657L, 0.024920948579031059959L, 0.055023979528410589779L, 0.060454076984224806511L},
+    {0.00004902832270260357171L, 0.00043946594635079326927L, 0.002499920427833167927L, 0.0060454076984224806511L, 0.0091651110286947807933L},
+};
 
 void expect_relative(double value, ld reference, double tolerance, const std::string& what) {
   EXPECT_LE(std::abs(static_cast<ld>(value) - reference) / reference, tolerance)
@@ -102,14 +121,12 @@ TEST(ConfigurationFactors, ParallelRectanglesAgreeWithQuadrature) {
 }
 
 TEST(ConfigurationFactors, ParallelRectanglesKeepTheirDigitsFromTouchingTo1e6Apart) {
-  // Near and middle: the textbook form in long double (its cancellation grows with
-  // c/a; still 1e-13 at c = 10 a). Far: Gauss over both rectangles in long double.
-  // The textbook form in double gives +9e-5 at c = 1000 a and exactly 0 at 10^6.
-  for (auto [a, b] : {std::array{1.0, 1.0}, std::array{2.0, 0.3}})
-    for (double c : {1e-4, 1e-2, 0.3, 1.0, 2.0, 3.0, 10.0}) {
-      expect_relative(gi::ff_parallel_rectangles(a, b, c * a), parallel_textbook(a, b, c * a), 1e-13,
-                      "textbook, c/a = " + std::to_string(c));
-    }
+  // Near and middle: the textbook form's values at 50 digits (above). Far: Gauss over
+  // both rectangles, positive terms that nothing cancels. The textbook form in double
+  // gives +9e-5 at c = 1000 a and exactly 0 at 10^6.
+  for (const ParallelValue& v : parallel_textbook)
+    expect_relative(gi::ff_parallel_rectangles(v.a, v.b, v.c_over_a * v.a), v.F, 1e-13,
+                    "textbook, c/a = " + std::to_string(v.c_over_a));
   for (double c : {10.0, 30.0, 100.0, 1e3, 1e4, 1e6})
     expect_relative(gi::ff_parallel_rectangles(1, 0.5, c), parallel_by_gauss(1, 0.5, c), 1e-13,
                     "Gauss, c = " + std::to_string(c));
@@ -133,14 +150,14 @@ TEST(ConfigurationFactors, PerpendicularRectanglesAgreeWithQuadratureAndReciproc
 }
 
 TEST(ConfigurationFactors, PerpendicularRectanglesKeepTheirDigitsAtEveryRatio) {
-  // Against the textbook form in long double where its cancellation (about 1/W, and
-  // W^2 or H^2 in the logarithms of ratios near 1) leaves 1e-13; at the extremes,
-  // where it does not, against the double contour integral (a different formula, in
-  // long double) and reciprocity.
-  for (double W : {0.01, 0.1, 1.0, 10.0, 100.0})
-    for (double H : {0.01, 0.1, 1.0, 10.0, 100.0})
-      expect_relative(gi::ff_perpendicular_rectangles(1, W, H), perpendicular_textbook(1, W, H), 1e-13,
+  // Against the textbook form's values at 50 digits (above); at the extremes, against
+  // the double contour integral (a different formula) and reciprocity.
+  for (int w = 0; w < 5; ++w)
+    for (int h = 0; h < 5; ++h) {
+      const double W = perpendicular_ratios[w], H = perpendicular_ratios[h];
+      expect_relative(gi::ff_perpendicular_rectangles(1, W, H), perpendicular_textbook[w][h], 1e-13,
                       "W = " + std::to_string(W) + ", H = " + std::to_string(H));
+    }
   for (double W : {1e-6, 1e-3, 1e3, 1e6})
     for (double H : {1e-6, 1e-3, 1e3, 1e6}) {
       const gi::Polygon floor = gi::make_polygon({vec3(0, 0, 0), vec3(1, 0, 0), vec3(1, W, 0), vec3(0, W, 0)});

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gi/core/rng.hpp"
+#include "gi/core/wide_float.hpp"
 #include "gi/radiosity/system/float_sweep.hpp"
 #include "gi/radiosity/system/radiosity_system.hpp"
 #include "support/print.hpp"
@@ -53,8 +54,8 @@ TEST(Ex12_2_RandomSystems, ResidualOfARandomGuess) {
   double r2 = 0, e2 = 0;
   for (int i = 0; i < n; ++i)
     for (int c = 0; c < 3; ++c) {
-      long double gathered = 0;
-      for (int j = 0; j < n; ++j) gathered += (long double)s.F[i * n + j] * B[3 * j + c];
+      gi::wide gathered = 0;
+      for (int j = 0; j < n; ++j) gathered += gi::wide(s.F[i * n + j]) * B[3 * j + c];
       const double r = double(s.emission[3 * i + c] + s.rho[3 * i + c] * gathered - B[3 * i + c]);
       r2 += r * r, e2 += double(s.emission[3 * i + c]) * s.emission[3 * i + c];
     }

@@ -5,11 +5,13 @@
 // Siegel and Howell, "Thermal Radiation Heat Transfer". The tests check each against
 // numerical integration as well.
 //
-// Written to keep their precision at every size and separation (to about 1e-14
-// relative): the textbook forms subtract nearly equal logarithms and arctangents, and
-// far apart lose every digit (the parallel-rectangle formula gives exactly 0 at 10^6
-// sizes). Where that happens these use log1p, differences of arctangents, a series,
-// or, for the general offset rectangles far away, the smooth integral itself.
+// Written to keep their precision at every size and separation, to about 1e-14
+// relative in double (none needs long double's extra digits; thin offset rectangles
+// nearer than 2 sizes, 2e-13): the textbook forms subtract nearly equal logarithms and
+// arctangents, and far apart lose every digit (the parallel-rectangle formula gives
+// exactly 0 at 10^6 sizes). Where that happens these use log1p, differences of
+// arctangents, a series, or, for the general offset rectangles from 2 sizes apart, the
+// smooth integral itself.
 // Every function throws std::invalid_argument for lengths that are not positive and
 // finite, or a configuration outside its description.
 
@@ -45,8 +47,11 @@ double ff_point_to_perpendicular_rectangle_corner(double a, double b, double c);
 //   A_1 F_12 = sum (-1)^(i+j+k+l) G(x_i - xi_k, y_j - eta_l),
 //   G(x, y) = 1/(2 pi) [x sqrt(y^2 + z^2) atan(x / sqrt(y^2 + z^2))
 //                       + y sqrt(x^2 + z^2) atan(y / sqrt(x^2 + z^2)) - z^2/2 ln(x^2 + y^2 + z^2)]
-// summed in long double; farther than 30 sizes, where those terms cancel, the
-// integral itself by Gauss-Legendre over both rectangles (positive, smooth there).
+// summed in gi::wide (gi/core/wide_float.hpp). Far apart those terms cancel (they grow
+// like distance^2, their sum shrinks like 1 / distance^2): where the round-off left
+// would pass 1e-14 of F, and the centres are 2 sizes apart or more, the integral
+// itself by Gauss-Legendre over both rectangles (positive and smooth there); nearer,
+// for thin rectangles, the sum over halves of them.
 double ff_parallel_rectangles_offset(double x1, double x2, double y1, double y2, double xi1, double xi2, double eta1,
                                      double eta2, double z);
 

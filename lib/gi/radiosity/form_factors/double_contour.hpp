@@ -17,7 +17,10 @@ namespace gi {
 // except where the edges meet -- a shared edge, a shared corner -- where it has a
 // logarithmic singularity that the intervals close in on. This is what makes the
 // method exact in the near field and at shared edges, where a fixed rule over the
-// area is not. `area_from` is A_i, the sender's whole area.
+// area is not. The sum is symmetric in the two polygons: the thinner one's edges are
+// the inner ones, and a thin rectangle's two long sides are one difference there, so a
+// strip 1e-6 wide keeps its digits in double. `area_from` is A_i, the sender's whole
+// area.
 Estimate form_factor_double_contour(const ConvexPolygon& from, const ConvexPolygon& to, double area_from,
                                     double relative_tolerance, int max_evaluations = 400000);
 

@@ -37,29 +37,29 @@ GaussRule make_gauss_legendre(int n) {
 
 // The 7-point Gauss and 15-point Kronrod rules on [-1, 1]: the Kronrod nodes
 // interleave the Gauss ones (x_1, x_3, x_5 are Gauss nodes), x_7 = 0 is shared.
-constexpr std::array<long double, 8> kronrod_x = {0.991455371120812639206854697526329L, 0.949107912342758524526189684047851L,
+constexpr std::array<wide, 8> kronrod_x = {0.991455371120812639206854697526329L, 0.949107912342758524526189684047851L,
                                              0.864864423359769072789712788640926L, 0.741531185599394439863864773280788L,
                                              0.586087235467691130294144845693013L, 0.405845151377397166906606412076961L,
-                                             0.207784955007898467600689403773245L, 0.0L};
-constexpr std::array<long double, 8> kronrod_w = {0.022935322010529224963732008058970L, 0.063092092629978553290700663189204L,
+                                             0.207784955007898467600689403773245L, wide(0)};
+constexpr std::array<wide, 8> kronrod_w = {0.022935322010529224963732008058970L, 0.063092092629978553290700663189204L,
                                              0.104790010322250183839876322541518L, 0.140653259715525918745189590510238L,
                                              0.169004726639267902826583426598550L, 0.190350578064785409913256402421014L,
                                              0.204432940075298892414161999234649L, 0.209482141084727828012999174891714L};
-constexpr std::array<long double, 4> gauss_w = {0.129484966168869693270611432679082L, 0.279705391489276667901467771423780L,
+constexpr std::array<wide, 4> gauss_w = {0.129484966168869693270611432679082L, 0.279705391489276667901467771423780L,
                                            0.381830050505118944950369775488975L, 0.417959183673469387755102040816327L};
 
 struct Interval {
   int piece;
-  long double a, b, value, error;
+  wide a, b, value, error;
   bool operator<(const Interval& other) const { return error < other.error; }  // a max-heap on the error
 };
 
-Interval kronrod(const std::function<long double(long double)>& f, int piece, long double a, long double b) {
-  const long double centre = 0.5L * (a + b), half = 0.5L * (b - a);
-  const long double f0 = f(centre);
-  long double k = kronrod_w[7] * f0, g = gauss_w[3] * f0;
+Interval kronrod(const std::function<wide(wide)>& f, int piece, wide a, wide b) {
+  const wide centre = 0.5 * (a + b), half = 0.5 * (b - a);
+  const wide f0 = f(centre);
+  wide k = kronrod_w[7] * f0, g = gauss_w[3] * f0;
   for (int j = 0; j < 7; ++j) {
-    const long double both = f(centre - half * kronrod_x[j]) + f(centre + half * kronrod_x[j]);
+    const wide both = f(centre - half * kronrod_x[j]) + f(centre + half * kronrod_x[j]);
     k += kronrod_w[j] * both;
     if (j % 2 == 1) g += gauss_w[j / 2] * both;
   }
@@ -81,14 +81,14 @@ const GaussRule& gauss_legendre(int order) {
 Estimate integrate_adaptive(const std::vector<Integrand>& pieces, double relative_tolerance, int max_evaluations) {
   std::priority_queue<Interval> heap;
   std::vector<Interval> finished;  // too short to halve
-  long double value = 0, error = 0;
-  long double magnitude = 0;  // the sum of |interval values|: what round-off is relative to
-  const auto take = [&](const Interval& interval, long double sign) {
+  wide value = 0, error = 0;
+  wide magnitude = 0;  // the sum of |interval values|: what round-off is relative to
+  const auto take = [&](const Interval& interval, wide sign) {
     value += sign * interval.value;
     error += sign * interval.error;
     magnitude += sign * std::abs(interval.value);
   };
-  const auto round_off = [&] { return 64 * std::numeric_limits<long double>::epsilon() * magnitude; };
+  const auto round_off = [&] { return 64 * std::numeric_limits<wide>::epsilon() * magnitude; };
   int evaluations = 0;
   for (int p = 0; p < static_cast<int>(pieces.size()); ++p) {
     if (!(pieces[p].b > pieces[p].a)) continue;
@@ -101,7 +101,7 @@ Estimate integrate_adaptive(const std::vector<Integrand>& pieces, double relativ
          evaluations + 30 <= max_evaluations) {
     const Interval worst = heap.top();
     heap.pop();
-    const long double middle = 0.5L * (worst.a + worst.b);
+    const wide middle = 0.5 * (worst.a + worst.b);
     if (!(middle > worst.a && middle < worst.b)) {
       finished.push_back(worst);
       continue;
@@ -116,7 +116,7 @@ Estimate integrate_adaptive(const std::vector<Integrand>& pieces, double relativ
   }
   // Added again from the intervals, so that the running sums' drift does not count.
   for (; !heap.empty(); heap.pop()) finished.push_back(heap.top());
-  long double total = 0, total_error = 0;
+  wide total = 0, total_error = 0;
   for (const Interval& interval : finished) total += interval.value, total_error += interval.error;
   return {static_cast<double>(total), static_cast<double>(std::max(total_error, round_off())), evaluations};
 }

@@ -2,6 +2,8 @@
 #include <functional>
 #include <vector>
 
+#include "gi/core/wide_float.hpp"
+
 namespace gi {
 
 // The n-point Gauss-Legendre rule on [0, 1]: exact for polynomials of degree 2n - 1.
@@ -20,12 +22,12 @@ struct Estimate {
 };
 
 // One piece of a sum of one-dimensional integrals: the integral of f over [a, b].
-// In long double (64-bit mantissa on x86), for sums whose pieces cancel: the double
-// contour integral of a thin strip subtracts pieces of size 1 to leave 1e-6.
+// In gi::wide (long double, a 64-bit mantissa on x86-64; double on Apple silicon and
+// with MSVC), for sums whose pieces cancel in part.
 struct Integrand {
-  std::function<long double(long double)> f;
-  long double a;
-  long double b;
+  std::function<wide(wide)> f;
+  wide a;
+  wide b;
 };
 
 // The sum of the pieces' integrals by adaptive Gauss-Kronrod quadrature (Piessens
