@@ -253,8 +253,11 @@ TEST(LeafMesh, TVerticesTakeTheValueOfTheEdgeTheyHangOn) {
   EXPECT_EQ(corners, 4 * lm.mesh.elements.size() + lm.t_vertices.size()) << "each T-vertex joins one large face";
   const std::filesystem::path file = std::filesystem::temp_directory_path() / "gi_hierarchical_test.ply";
   gi::write_ply(lm.mesh, vertex_B, 1.0, file, lm.faces);
-  std::ifstream in(file);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text;
+  {
+    std::ifstream in(file);  // closed before the file is removed: Windows refuses to remove an open file
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
   EXPECT_NE(text.find("element face 8\n"), std::string::npos);
   EXPECT_NE(text.find("\n5 "), std::string::npos) << "the large quarter's faces list their T-vertex";
   std::filesystem::remove(file);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 namespace {
@@ -24,6 +25,13 @@ TEST(Chart, LinearTicksAreOneTwoFiveSteps) {
 
 TEST(Chart, LogTicksAreDecades) {
   EXPECT_EQ(gi::axis_ticks(0.003, 2, true), (std::vector<double>{1e-3, 1e-2, 1e-1, 1, 10}));
+}
+
+// Every decade from 10^-22 to 10^22, the same bits as the literal
+// (std::pow(10.0, -3) is a unit in the last place off on MinGW).
+TEST(Chart, PowersOfTenAreTheNearestDoubles) {
+  for (int e = -22; e <= 22; ++e)
+    EXPECT_EQ(gi::power_of_ten(e), std::strtod(("1e" + std::to_string(e)).c_str(), nullptr)) << "10^" << e;
 }
 
 // A log axis over less than a few decades still carries several labelled ticks:

@@ -143,7 +143,7 @@ TEST(SceneFile, EveryErrorNamesLineColumnAndField) {
       {with(sphere + R"(, "quad_lights": [{"corner": [0, 5, 0], "edge_u": [1, 0, 0], "edge_v": [0, 0, 0], "intensity": 1}])"),
        "box.json:1:190: quad_lights[0]: the edges are zero or parallel, so the quad has no area"},
       {with(R"("meshes": [{"file": "nowhere.obj", "material": "white"}])"),
-       "box.json:1:124: meshes[0].file: no such file: " + gi_test::scratch_folder("error").string() + "/nowhere.obj"},
+       "box.json:1:124: meshes[0].file: no such file: " + (gi_test::scratch_folder("error") / "nowhere.obj").string()},
       {R"({"camera": {"eye": [0, 1, 5], "look_at": [0, 1, 5]}, )" + matte + ", " + sphere + "}",
        "box.json:1:12: camera: eye and look_at must differ"},
       {R"({"camera": {"eye": [0, 1, 5], "look_at": [0, 1, 0], "up": [0, 0, 1]}, )" + matte + ", " + sphere + "}",

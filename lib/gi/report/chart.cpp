@@ -40,7 +40,7 @@ std::string tick_label(double v, bool log) {
   char buffer[32];
   // The decade of v; none for 0, whose log is -inf (no int holds it).
   const int e = v != 0 ? static_cast<int>(std::floor(std::log10(std::abs(v)) + 1e-9)) : 0;
-  if (log && (e < -3 || e > 4)) std::snprintf(buffer, sizeof buffer, "%.3ge%d", v / std::pow(10.0, e), e);
+  if (log && (e < -3 || e > 4)) std::snprintf(buffer, sizeof buffer, "%.3ge%d", v / power_of_ten(e), e);
   else std::snprintf(buffer, sizeof buffer, "%g", std::abs(v) < 1e-12 ? 0.0 : v);
   return buffer;
 }
@@ -83,7 +83,7 @@ namespace {
 std::vector<double> log_ticks(double lo, double hi, const std::vector<int>& mantissas) {
   std::vector<double> all;
   for (int e = static_cast<int>(std::floor(std::log10(lo))) - 1; e <= static_cast<int>(std::ceil(std::log10(hi))); ++e)
-    for (int m : mantissas) all.push_back(m * std::pow(10.0, e));
+    for (int m : mantissas) all.push_back(m * power_of_ten(e));
   std::vector<double> ticks;
   for (std::size_t i = 0; i < all.size(); ++i) {
     const bool below = i + 1 < all.size() && all[i + 1] <= lo * (1 + 1e-12);
@@ -94,6 +94,13 @@ std::vector<double> log_ticks(double lo, double hi, const std::vector<int>& mant
 }
 
 }  // namespace
+
+double power_of_ten(int e) {
+  if (e < -22 || e > 22) return std::pow(10.0, e);  // beyond the exact powers: as near as pow gives
+  double p = 1;
+  for (int i = 0; i < std::abs(e); ++i) p *= 10;  // exact: 10^22 = 2^22 5^22 and 5^22 < 2^53
+  return e < 0 ? 1 / p : p;
+}
 
 std::vector<double> axis_ticks(double lo, double hi, bool log) {
   if (log) {
@@ -111,7 +118,7 @@ std::vector<double> axis_ticks(double lo, double hi, bool log) {
   std::vector<double> ticks;
   // The smallest step of the form {1, 2, 5} x 10^k that gives at most 8 intervals.
   const double raw = (hi - lo) / 8;
-  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  const double decade = power_of_ten(static_cast<int>(std::floor(std::log10(raw))));
   double step = decade * 10;
   for (double m : {1.0, 2.0, 5.0})
     if (m * decade >= raw) {

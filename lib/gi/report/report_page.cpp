@@ -8,6 +8,7 @@
 
 #include "gi/image/diff.hpp"
 
+#include "gi/report/chart.hpp"
 #include "gi/report/page_assets.hpp"
 
 namespace gi {
@@ -67,8 +68,10 @@ int shown_width(int width) {
 }
 
 std::string source_link(const std::filesystem::path& folder, const std::string& relative) {
-  const std::filesystem::path file = source_file(relative);
+  // Both made absolute: a source tree named without a drive (as a cross build run by
+  // Wine names it) and a folder with one are then on the same drive.
   std::error_code error;
+  const std::filesystem::path file = std::filesystem::absolute(source_file(relative), error).lexically_normal();
   const std::filesystem::path from = std::filesystem::absolute(folder, error).lexically_normal();
   const std::filesystem::path link = file.lexically_relative(from);
   return url_path((link.empty() ? file : link).generic_string());
@@ -135,10 +138,10 @@ std::vector<double> bar_ticks(double a, double b, bool log) {
   if (!(hi > lo)) return ticks;
   if (log) {
     for (int e = static_cast<int>(std::ceil(std::log10(lo) - 1e-9)); e <= std::floor(std::log10(hi) + 1e-9); ++e)
-      ticks.push_back(std::pow(10.0, e));
+      ticks.push_back(power_of_ten(e));
     return ticks;
   }
-  const double raw = (hi - lo) / 5, decade = std::pow(10.0, std::floor(std::log10(raw)));
+  const double raw = (hi - lo) / 5, decade = power_of_ten(static_cast<int>(std::floor(std::log10(raw))));
   double step = 10 * decade;
   for (double m : {1.0, 2.0, 5.0})
     if (m * decade >= raw) {
@@ -168,7 +171,7 @@ std::string short_number(double v) {
 std::string tick_text(double v, bool log) {
   if (!log) return short_number(v);
   const int e = static_cast<int>(std::lround(std::log10(v)));
-  if (std::abs(v - std::pow(10.0, e)) > 1e-9 * v) return short_number(v);
+  if (std::abs(v - power_of_ten(e)) > 1e-9 * v) return short_number(v);
   return "10<sup>" + std::to_string(e) + "</sup>";
 }
 
