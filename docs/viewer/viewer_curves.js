@@ -9,12 +9,30 @@ var GI = window.GI || (window.GI = {});
 const palette = ["#1f5fbf", "#d0471a", "#2a9d3a", "#8e44ad", "#b8860b", "#555555"];
 const margin = { left: 64, right: 16, top: 14, bottom: 40 };
 
-// Nice powers of ten to label a log axis from lo to hi.
-function decades(lo, hi) {
+// Values to label a log axis from lo to hi, at least three where the range allows:
+// powers of ten, thinned to about eight; over less than three decades 1-2-5 x 10^k,
+// then every digit x 10^k.
+function logTicks(lo, hi) {
+  const inside = (v) => v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9);
+  for (const mantissas of [[1], [1, 2, 5], [1, 2, 3, 4, 5, 6, 7, 8, 9]]) {
+    const ticks = [];
+    for (let e = Math.floor(Math.log10(lo)); e <= Math.ceil(Math.log10(hi)); ++e)
+      mantissas.forEach((m) => { const v = m * Math.pow(10, e); if (inside(v)) ticks.push(v); });
+    if (ticks.length >= 3) {
+      const every = Math.max(1, Math.ceil(ticks.length / 8));
+      return ticks.filter((v, i) => i % every === 0);
+    }
+  }
+  return [lo, hi];
+}
+
+// Values to label a linear axis from lo to hi: steps of 1, 2 or 5 x 10^k, at most 6.
+function linearTicks(lo, hi) {
+  const raw = (hi - lo) / 6, decade = Math.pow(10, Math.floor(Math.log10(raw)));
+  const step = [1, 2, 5, 10].map((m) => m * decade).find((s) => s >= raw);
   const ticks = [];
-  for (let e = Math.floor(Math.log10(lo)); e <= Math.ceil(Math.log10(hi)); ++e) ticks.push(e);
-  const every = Math.max(1, Math.ceil(ticks.length / 8));
-  return ticks.filter((e) => e % every === 0);
+  for (let v = Math.ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step) ticks.push(v);
+  return ticks;
 }
 
 function format(v) {
@@ -63,15 +81,18 @@ GI.Curves = function (canvas, readout) {
     // Axes, decades and labels.
     ctx.strokeStyle = "#ccc";
     ctx.textAlign = "right";
-    decades(y0, y1).forEach((e) => {
-      const y = py(Math.pow(10, e));
+    logTicks(y0, y1).forEach((v) => {
+      const y = py(v);
       if (y < margin.top - 1 || y > h - margin.bottom + 1) return;
       ctx.beginPath(); ctx.moveTo(margin.left, y); ctx.lineTo(w - margin.right, y); ctx.stroke();
-      ctx.fillText("1e" + e, margin.left - 6, y + 4);
+      ctx.fillText(v.toExponential(0).replace("e+", "e"), margin.left - 6, y + 4);
     });
     ctx.textAlign = "center";
-    ctx.fillText(format(x0), margin.left, h - margin.bottom + 16);
-    ctx.fillText(format(x1), w - margin.right - 10, h - margin.bottom + 16);
+    linearTicks(x0, x1).forEach((v) => {
+      const x = box.px(v);
+      ctx.beginPath(); ctx.moveTo(x, h - margin.bottom); ctx.lineTo(x, h - margin.bottom + 4); ctx.stroke();
+      ctx.fillText(format(v), x, h - margin.bottom + 16);
+    });
     ctx.fillText(labels.x, (margin.left + w - margin.right) / 2, h - 6);
     ctx.save();
     ctx.translate(14, (margin.top + h - margin.bottom) / 2);

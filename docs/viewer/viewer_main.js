@@ -33,7 +33,7 @@ function start() {
   const primary = drawn.reduce((a, r) => (r.frames.length > a.frames.length ? r : a), drawn[0] || null);
   const state = {
     mode: drawn.length ? "runs" : "lights",
-    frame: 0,
+    frame: primary ? primary.frames.length - 1 : 0,  // opens on the last frame, the solution; play replays
     exposure: data.exposure,
     weights: data.lights.map((l) => l.weight),
   };
@@ -142,19 +142,23 @@ function start() {
   // Controls.
   const slider = $("step");
   slider.max = primary ? primary.frames.length - 1 : 0;
-  slider.addEventListener("input", () => { state.frame = +slider.value; draw(); });
+  slider.value = state.frame;
+  const last = () => !primary || state.frame >= primary.frames.length - 1;
+  const playLabel = () => { $("play").textContent = playing ? "pause" : last() ? "replay from the start" : "play"; };
+  slider.addEventListener("input", () => { state.frame = +slider.value; playLabel(); draw(); });
   $("step-row").hidden = !primary || primary.frames.length < 2;
   let playing = null;
   $("play").addEventListener("click", () => {
-    if (playing) { clearInterval(playing); playing = null; $("play").textContent = "play"; return; }
-    if (state.frame >= primary.frames.length - 1) state.frame = 0;
-    $("play").textContent = "pause";
+    if (playing) { clearInterval(playing); playing = null; playLabel(); return; }
+    if (last()) state.frame = 0;
     playing = setInterval(() => {
-      if (state.frame >= primary.frames.length - 1) { $("play").click(); return; }
+      if (last()) { $("play").click(); return; }
       slider.value = ++state.frame;
       draw();
     }, 150);
+    playLabel();
   });
+  playLabel();
   const exposureLabel = () => { $("exposure-label").textContent = state.exposure.toPrecision(3); };
   $("exposure").value = Math.log2(state.exposure);
   $("exposure").addEventListener("input", () => { state.exposure = Math.pow(2, +$("exposure").value); exposureLabel(); draw(); });

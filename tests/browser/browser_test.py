@@ -17,7 +17,8 @@ Runs every lesson small into a scratch folder, then checks that
     false colour shows a bar with its values and quantity, and every PNG whose
     pixels lie on the false-colour ramp (black, blue, green, yellow, red; read here
     from the file, not from the page) is such a figure;
-  - each viewer loads with no console error and draws; moving the step slider (a
+  - each viewer loads with no console error and draws, on its last frame (the
+    solution; play replays from the first); moving the step slider (a
     real click on it), a light's slider and dragging the camera change the canvas;
     the pointer over the chart writes the curves' values under it;
   - lesson 13's viewer (hierarchical radiosity): a click on the mesh picks a leaf
@@ -270,6 +271,10 @@ def move_slider(page, selector, fraction):
 
 def progressive_viewer(browser, out, update):
     page = open_viewer(browser, out, "11_progressive")
+    check(page.evaluate("(() => { const s = document.getElementById('step'); return s.value === s.max; })()"),
+          "11's viewer does not open on its last frame, the solution")
+    check(page.evaluate("document.getElementById('play').textContent") == "replay from the start",
+          "11's viewer: at the last frame, play does not offer to replay from the start")
     first = canvas_shot(page)
     move_slider(page, "#step", 0.5)
     check(int(page.evaluate("document.getElementById('step').value")) > 0, "11's viewer: the click did not move the slider")
