@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
+#include <string>
 
 #include "gi/raytrace/optics.hpp"
 #include "support/print.hpp"
@@ -14,6 +16,21 @@ const vec3 up{0, 1, 0};
 vec3 incoming(double degrees) {
   const double a = degrees * gi::pi / 180;
   return {std::sin(a), -std::cos(a), 0};
+}
+
+// Straight in, cos_i = cos_t = 1 and t = eta d + (eta - 1) n is d itself, whatever eta:
+// a t along d but of another length is a slip in a term, which shows only when eta != 1.
+std::string wrong_length_at_normal_incidence(double length, double eta) {
+  std::ostringstream why;
+  if (std::abs(length - (2 - eta)) < 1e-9)
+    why << "t = d + (eta - 1) n: multiply d by eta. ";
+  else if (std::abs(length - eta) < 1e-9)
+    why << "t = eta d: the normal term is (eta cos_i - cos_t) n, with eta on cos_i. ";
+  else
+    why << "a factor eta is missing or a sign is wrong in a term of t = eta d + (eta cos_i - cos_t) n. ";
+  why << "Straight in the ray goes on straight, but yours has length " << length << ", not 1 (eta = " << eta
+      << "): with cos_i = cos_t = 1, t = eta d + (eta - 1) n must be d itself; such a slip shows only when eta != 1";
+  return why.str();
 }
 }  // namespace
 
@@ -38,18 +55,24 @@ TEST(Ex2_1_Reflect, KeepsLengthAndAngle) {
 }
 
 TEST(Ex2_2_Refract, NormalIncidencePassesStraightThrough) {
-  const auto t = gi::refract(vec3(0, -1, 0), up, 1.0 / 1.5);
+  const double eta = 1.0 / 1.5;
+  const auto t = gi::refract(vec3(0, -1, 0), up, eta);
   ASSERT_TRUE(t) << "straight into glass there is no total internal reflection: return the direction";
+  const bool along_d = t->x == 0 && t->z == 0 && t->y < 0;
   EXPECT_NEAR(gi::length(*t - vec3(0, -1, 0)), 0, 1e-12)
-      << (t->y > 0 ? "the transmitted ray turned back: check the sign of the (eta cos_i - cos_t) n term"
-                   : "at normal incidence the ray is not bent");
+      << (t->y > 0  ? "the transmitted ray turned back: check the sign of the (eta cos_i - cos_t) n term"
+          : along_d ? wrong_length_at_normal_incidence(gi::length(*t), eta)
+                    : "at normal incidence the ray is not bent");
 }
 
 TEST(Ex2_2_Refract, ObeysSnellsLawIntoGlass) {
   for (double degrees : {15.0, 30.0, 60.0, 80.0}) {
     const auto t = gi::refract(incoming(degrees), up, 1.0 / 1.5);
     ASSERT_TRUE(t) << "air to glass never reflects totally (" << degrees << " degrees)";
-    EXPECT_NEAR(gi::length(*t), 1.0, 1e-9) << "the transmitted direction must be unit length";
+    EXPECT_NEAR(gi::length(*t), 1.0, 1e-9)
+        << "the transmitted direction must be unit length (|t| = " << gi::length(*t) << " at " << degrees
+        << " degrees): t = eta d + (eta cos_i - cos_t) n is unit only with sin^2(theta_t) = eta^2 (1 - cos_i^2) "
+           "and cos_t = sqrt(1 - sin^2(theta_t))";
     EXPECT_LT(t->y, 0) << "the transmitted ray goes on into the surface; check the sign of the n term";
     const double sin_t = t->x;
     const double sin_i = std::sin(degrees * gi::pi / 180);

@@ -186,6 +186,36 @@ TEST(Ex5_2_BvhTraversal, VisitsTheNearerChildFirst) {
   }
 }
 
+TEST(Ex5_2_BvhTraversal, TestsChildrenOnlyUpToTheNearestHit) {
+  NEEDS_SLAB_TEST(1);
+  const std::string slab_problem = lab05::slab_test_t_max_problem();
+  ASSERT_TRUE(slab_problem.empty()) << slab_problem;
+  // Three quads, one per leaf. A median split cuts off the one whose centre lies
+  // lowest along the longest axis (y): the long ramp, which reaches from y = -20 to
+  // y = 1 and from z = 1 to z = 3.1, and meets the z axis at z = 3. The other two
+  // share the root's right child: a square at z = 5 and, off to the side at x = 5, a
+  // square at z = 2.05, which makes their common box start at z = 2, before the ramp's hit.
+  const Quad ramp{{-1, -20, 1}, {2, 0, 0}, {0, 21, 2.1}, 0};
+  const Quad beside{{4, -0.5, 2}, {2, 0, 0.1}, {0, 1, 0}, 0};
+  const gi::World world = world_of({ramp, square(5, 1), beside}, gi::BvhSettings{1, 12, gi::Split::Median});
+  const std::vector<gi::BvhNode>& nodes = world.bvh.nodes;
+  ASSERT_TRUE(nodes.size() == 5 && nodes[1].count == 1 && world.bvh.refs[nodes[1].offset].index == 0 &&
+              nodes[2].count == 0)
+      << "this test's tree is not the one it was written for (root, ramp, then a node over the two squares): "
+         "the test itself needs updating, your code is not at fault";
+  gi::TraversalCounts counts;
+  const auto hit = gi::closest_hit(world, up_the_z_axis, &counts);
+  ASSERT_TRUE(hit) << "the ray up the z axis meets the ramp at z = 3";
+  EXPECT_NEAR(hit->t, 3.0, 1e-12) << "the ramp is at t = 3; the square at z = 5 is beyond it";
+  EXPECT_EQ(counts.primitive_tests, 1u)
+      << "after a hit, test children's boxes only up to the nearest hit so far: give slab_test the ray whose "
+         "t_max each hit shortened, not a copy taken before the hit. Here the ray hits the ramp at t = 3, then "
+         "enters the box of the two squares at t = 2 < 3, so that node is visited; but of its children the ray "
+         "enters only the square at z = 5, at t = 4.95, beyond the hit: that leaf must not be opened";
+  EXPECT_EQ(counts.nodes_visited, 3u) << "the root, the ramp's leaf and the node over the two squares; both of "
+                                         "its children are entered beyond the hit at t = 3, or not at all";
+}
+
 TEST(Ex5_2_BvhTraversal, AgreesWithBruteForceOnRandomRays) {
   NEEDS_SLAB_TEST(3);
   const gi::Scene room = gi::quad_room(1500);

@@ -41,6 +41,16 @@ inline std::string slab_test_problem(int level) {
   return "";
 }
 
+// What a test of skipping needs of exercise 5.1 besides `level` 1: a box the ray
+// enters beyond its t_max is a miss (pitfall 3), as a message ("" when all is well).
+inline std::string slab_test_t_max_problem() {
+  const gi::Ray cut_short{{2, 1.5, -3}, {0, 0, 1}, 0, 3};  // would enter the box at t = 4
+  if (gi::slab_test(cut_short, 1.0 / cut_short.direction, gi::Aabb{{1, 1, 1}, {3, 2, 4}}))
+    return "your slab test lets in a box the ray enters beyond its t_max -- closest_hit relies on your slab test "
+           "(exercise 5.1): make its tests pass first";
+  return "";
+}
+
 }  // namespace lab05
 
 // Stops a test whose scene needs more of the slab test than yours gives, saying so.

@@ -45,6 +45,20 @@ TEST(Ex7_3_Projection, TopCellIndices) {
   expect_cell({1, -0.5, 2}, 8, HemicubeFace::Top, 6, 3, "divide by z to reach the plane z = 1, then map [-1, 1] to cells");
 }
 
+TEST(Ex7_3_Projection, SideCellIndices) {
+  // On the face x = 1: (y, z) / x = (-0.5, 0.5): column 25 of 100, row 25 of 50. Every
+  // coordinate falls on a cell's edge, so rounding and truncating agree here.
+  const auto cell = gi::project_to_hemicube({2, -1, 1}, 100);
+  ASSERT_TRUE(cell.has_value()) << "every direction with z > 0 meets the hemicube";
+  EXPECT_EQ(cell->face, HemicubeFace::PlusX) << "direction (2, -1, 1): the face is the axis with the largest "
+                                                "|component|, with its sign";
+  EXPECT_EQ(cell->column, 25)
+      << "on the face x = 1 the column runs along y, from y = -1 (column 0) to y = 1: y / |x| = -0.5 lies in column 25"
+      << (cell->column == 75 ? "; yours is column 75, the mirror image: u = y / |x|, with the sign of y" : "");
+  EXPECT_EQ(cell->row, 25) << "divide by |x| to reach the face x = 1; rows count up from the horizon z = 0 over "
+                              "[0, 1]: z / |x| = 0.5 lies in row 25 of 50";
+}
+
 TEST(Ex7_3_Projection, CellsAreCountedNotRounded) {
   // Top: (x, y) / z = (0.3, -0.55): column (0.3 + 1) / 2 * 10 = 6.5, row 2.25.
   expect_cell({0.3, -0.55, 1}, 10, HemicubeFace::Top, 6, 2,
@@ -52,12 +66,6 @@ TEST(Ex7_3_Projection, CellsAreCountedNotRounded) {
   // On x = 1: (y, z) / x = (-0.45, 0.35): column 2.75, row 1.75.
   expect_cell({2, -0.9, 0.7}, 10, HemicubeFace::PlusX, 2, 1,
               "a point 2.75 cells across lies in cell 2: truncate towards the edge, do not round");
-}
-
-TEST(Ex7_3_Projection, SideCellIndices) {
-  // On the face x = 1: (y, z) / x = (-0.5, 0.5): column 25 of 100, row 25 of 50.
-  expect_cell({2, -1, 1}, 100, HemicubeFace::PlusX, 25, 25,
-              "divide by |x| to reach the face x = 1; rows count up from the horizon z = 0 over [0, 1]");
 }
 
 TEST(Ex7_3_Projection, CellsOnTheMinusFaces) {
