@@ -196,9 +196,20 @@ function start() {
   $("mode-row").hidden = !(drawn.length && data.lights.length);
   document.querySelectorAll("input[name=mode]").forEach((r) => r.addEventListener("change", () => setMode(r.value)));
 
+  // Each run's status and where it ended: "stopped at the limit after 800 shots" alone
+  // reads as a failure, though the run did what it was asked.
+  const ending = (r) => {
+    const last = (q) => (r.history[q] && r.history[q].length ? r.history[q][r.history[q].length - 1] : null);
+    const unshot = last("unshot"), error = last("error"), residual = last("residual_2");
+    const short = (v) => (v !== 0 && (v < 1e-3 || v >= 1e5) ? v.toExponential(1) : String(+v.toPrecision(3)));
+    if (unshot !== null) return ": unshot energy " + short(unshot) + " of the emitted";
+    if (error !== null) return ": RMS error " + short(error) + " of the reference's";
+    if (residual !== null) return ": residual " + short(residual) + " of ||E||";
+    return "";
+  };
   $("statuses").replaceChildren(...data.runs.map((r) => {
     const li = document.createElement("li");
-    li.textContent = r.name + ": " + r.status;
+    li.textContent = r.name + ": " + r.status + ending(r);
     return li;
   }));
   chart();

@@ -275,6 +275,8 @@ def progressive_viewer(browser, out, update):
           "11's viewer does not open on its last frame, the solution")
     check(page.evaluate("document.getElementById('play').textContent") == "replay from the start",
           "11's viewer: at the last frame, play does not offer to replay from the start")
+    check("unshot energy " in page.evaluate("document.getElementById('statuses').textContent"),
+          "11's viewer: the run's status does not say how much energy is left unshot")
     first = canvas_shot(page)
     move_slider(page, "#step", 0.5)
     check(int(page.evaluate("document.getElementById('step').value")) > 0, "11's viewer: the click did not move the slider")
