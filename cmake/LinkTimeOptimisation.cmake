@@ -33,6 +33,16 @@ function(gi_fast_code target)
   endif()
 endfunction()
 
+# gi_plain_code(SOURCE...): files of a fast topic that only set a program up. Compiled
+# to machine code alone, a lesson's link takes them as they are: it would gain nothing
+# by optimising them again (scene files and their JSON alone are a third of what each
+# lesson's link would otherwise optimise).
+function(gi_plain_code)
+  if(gi_lto)
+    set_property(SOURCE ${ARGN} APPEND PROPERTY COMPILE_OPTIONS -fno-lto)
+  endif()
+endfunction()
+
 # gi_fast_program(TARGET): a lesson or a bench. Its own objects are only ever linked
 # with LTO, so they hold GCC's intermediate code alone ("slim"): their machine code
 # would never be used (a lesson's file compiles in about 40% less time).
