@@ -156,7 +156,8 @@ class Runner:
             return self.launch_directly(argv, timeout, pass_fds, scratch)
         status_read, status_write = os.pipe()
         config = {"argv": argv, "timeout": timeout, "scratch": str(scratch), "env": program_env(scratch),
-                  "uid": self.uid, "hide": self.hide, "memory": self.memory, "status_fd": status_write}
+                  "uid": self.uid, "hide": self.hide, "keep": str(self.base), "memory": self.memory,
+                  "status_fd": status_write}
         with tempfile.TemporaryFile() as out:
             try:
                 process = subprocess.Popen(sandbox.command(config), stdin=subprocess.DEVNULL, stdout=out,

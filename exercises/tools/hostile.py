@@ -173,6 +173,21 @@ KEY_HUNT = r'''
   }();
   if (!shut) return std::nullopt;
 '''
+# Put before the reference of 1.1: files left in every folder anyone may write, 256 MB
+# into shared memory (tmpfs pages, which no process's memory limit counts; in files
+# under the 64 MB file limit), and a look at the machine's processes through /proc. It
+# answers right only if the memory stopped well short and its /proc is the sandbox's
+# own (the shell's pid as its /proc says it equals the pid the shell knows itself by).
+LEAVE_BEHIND = r'''
+  static const bool shut = [] {
+    std::system("exec 2>/dev/null; for d in /tmp /var/tmp /dev/shm /run/lock; do echo left > $d/{MARK}; done");
+    const bool capped = std::system("exec 2>/dev/null; for k in 1 2 3 4 5 6 7 8; do "
+                                    "dd if=/dev/zero of=/dev/shm/{MARK}-$k bs=1M count=32 || exit 0; done; exit 1") == 0;
+    const bool own_proc = std::system("read -r pid rest < /proc/self/stat; test \"$pid\" = \"$$\"") == 0;
+    return capped && own_proc;
+  }();
+  if (!shut) return std::nullopt;
+'''
 
 
 @dataclass
@@ -184,7 +199,7 @@ class Case:
     earns: dict = field(default_factory=lambda: {"1.1": 0, "1.2": "all"})
     links: bool = False                # submit links to the reference instead of files
     fallback: bool = False             # graded again with the namespaces switched off
-    needs: str = ""                    # "limits" or "user": only where the sandbox has them
+    needs: str = ""                    # "limits", "user" or "mount": only where the sandbox has them
     note: str = ""                     # a word the notes must carry
     says: str = ""                     # words a visible test's output must carry
     prefix: str = ""                   # put before the reference body of 1.1
@@ -217,7 +232,11 @@ CASES = [
     Case("key-hunt", "1.1 opens its own memory, its parent's from a child, and the signed report for reading, "
          "and answers right only if all three are refused", prefix=KEY_HUNT, earns={"1.1": "all", "1.2": "all"},
          fallback=True),
+    Case("leave-behind", "1.1 leaves files in /tmp, /var/tmp, /dev/shm and /run/lock, writes 256 MB into /dev/shm "
+         "and reads /proc, and answers right only if the memory is capped and /proc shows the sandbox alone",
+         prefix=LEAVE_BEHIND, earns={"1.1": "all", "1.2": "all"}, needs="mount"),
 ]
+SHARED = ("/tmp", "/var/tmp", "/dev/shm", "/run/lock")  # where anyone may write, outside any sandbox
 
 
 def fill(body, values):
@@ -349,6 +368,9 @@ def main(argv):
                 if case.needs == "limits" and "no resource limits" in done.stdout:
                     print(f"{label}: skipped (no resource limits here)")
                     continue
+                if case.needs == "mount" and ("no mount namespace" in done.stdout or "no /proc" in done.stdout):
+                    print(f"{label}: skipped (no mount namespace or /proc of its own here)")
+                    continue
                 results = ag / "results" / "results.json"
                 if done.returncode != 0 or not results.is_file():
                     problems.append(f"{label}: run_autograder exited {done.returncode}: {done.stderr.strip()[-500:]}")
@@ -359,6 +381,11 @@ def main(argv):
                 time.sleep(case.settle)  # what a detached process would do, it would have done by now
                 if results.read_text() != text:
                     problems.append(f"{label}: results.json changed after run_autograder returned")
+                left = [str(f) for folder in SHARED for f in Path(folder).glob(values["MARK"] + "*")]
+                if left:
+                    problems.append(f"{label}: files the attack wrote outlived grading: {left[:3]}")
+                    for f in left:
+                        Path(f).unlink()
                 if alive(values["MARK"]):
                     problems.append(f"{label}: processes of the attack outlived grading: {alive(values['MARK'])}")
                 if fingerprint(ag / "source") != before:

@@ -18,7 +18,13 @@ allows (each one tried, and said so when missing; see isolation_note):
             IPC namespaces;
   userns    without root, the namespaces above inside a user namespace of its own;
   mount     its own mount namespace, where the tree and the grader's folders are
-            covered by empty, unreadable file systems;
+            covered by empty, unreadable file systems, and /tmp, /var/tmp, /dev/shm
+            and /run/lock are small file systems of its own (64 MB each, in memory,
+            gone with the namespace: nothing written there outlives the run or grows
+            past the limits); the grader's folder of programs and scratch folders is
+            put back in its place;
+  proc      with the PID namespace and the mount namespace, a /proc of its own, which
+            shows the namespace's processes and no other;
   subreaper without a PID namespace: orphans of the program are reparented to this
             process, which kills them all when the program ends;
   limits    memory (data segment), processes, file size (64 MB), open files, no core
@@ -35,7 +41,7 @@ started) is killed. The status goes to the grader on a descriptor of its own, as
 JSON object: {"returncode": code, -signal or null on timeout, "timed_out": bool,
 "missing": [layers not available]}.
 
-GI_SANDBOX_OFF=user,pidns,userns,mount,subreaper,limits,seccomp (or "all") switches layers
+GI_SANDBOX_OFF=user,pidns,userns,mount,proc,subreaper,limits,seccomp (or "all") switches layers
 off, so that the fallbacks can be tested on a system where everything works.
 """
 import json
@@ -46,14 +52,16 @@ import sys
 import time
 from pathlib import Path
 
-LAYERS = ("user", "pidns", "userns", "mount", "subreaper", "limits", "seccomp")
+LAYERS = ("user", "pidns", "userns", "mount", "proc", "subreaper", "limits", "seccomp")
+PRIVATE = ("/tmp", "/var/tmp", "/dev/shm", "/run/lock")  # folders anyone may write: the run's own
+PRIVATE_SIZE = "64m"     # each of them: tmpfs pages count against no process's limit
 MAX_FILE = 64 << 20      # bytes any file the program writes may reach
 MAX_PROCESSES = 256      # threads count too: parallel_for starts one per core
 MAX_OPEN_FILES = 256
 
 CLONE_NEWNS, CLONE_NEWUTS, CLONE_NEWIPC = 0x00020000, 0x04000000, 0x08000000
 CLONE_NEWUSER, CLONE_NEWPID, CLONE_NEWNET = 0x10000000, 0x20000000, 0x40000000
-MS_NOSUID, MS_NODEV, MS_NOEXEC, MS_REC, MS_PRIVATE = 2, 4, 8, 1 << 14, 1 << 18
+MS_NOSUID, MS_NODEV, MS_NOEXEC, MS_BIND, MS_REC, MS_PRIVATE = 2, 4, 8, 1 << 12, 1 << 14, 1 << 18
 PR_SET_PDEATHSIG, PR_SET_DUMPABLE, PR_SET_SECCOMP, PR_SET_CHILD_SUBREAPER, PR_SET_NO_NEW_PRIVS = 1, 4, 22, 36, 38
 SECCOMP_MODE_FILTER = 2
 
@@ -127,7 +135,7 @@ def enter_namespaces(lib, config, missing):
         missing.append("pidns")
         return False, False, False
     flags = CLONE_NEWPID | CLONE_NEWNET | CLONE_NEWIPC | CLONE_NEWUTS
-    mount_wanted = bool(config.get("hide")) and "mount" not in off
+    mount_wanted = "mount" not in off
     if mount_wanted:
         flags |= CLONE_NEWNS
     if os.geteuid() == 0 and call(lib, "unshare", flags):
@@ -157,6 +165,40 @@ def cover(lib, folders, missing):
                                               ctypes.c_ulong(MS_NOSUID | MS_NODEV | MS_NOEXEC), b"size=16k,mode=000"):
             missing.append("mount")
             return
+
+
+def make_private(lib, keep, missing):
+    """Gives the namespace its own /tmp, /var/tmp, /dev/shm and /run/lock: a small
+    tmpfs each, which ends with the namespace. `keep` (the grader's folder, holding the
+    program and its scratch folder) is put back where it was when one of them covers it:
+    bound from a descriptor opened before it was covered."""
+    import ctypes
+    held = os.open(keep, os.O_RDONLY | os.O_DIRECTORY | os.O_CLOEXEC) if keep else None
+    try:
+        for folder in PRIVATE:
+            if not Path(folder).is_dir() or Path(folder).is_symlink():
+                continue  # /run/lock is missing on some systems, a link to /run on others
+            if not call(lib, "mount", b"tmpfs", os.fsencode(folder), b"tmpfs", ctypes.c_ulong(MS_NOSUID | MS_NODEV),
+                        f"size={PRIVATE_SIZE},nr_inodes=16k,mode=1777".encode()):
+                missing.append("mount")
+                return
+            if held is not None and os.path.commonpath([folder, keep]) == folder:
+                os.makedirs(keep, exist_ok=True)
+                if not call(lib, "mount", f"/proc/self/fd/{held}".encode(), os.fsencode(keep), None,
+                            ctypes.c_ulong(MS_BIND | MS_REC), None):
+                    raise OSError(f"cannot put {keep} back in the sandbox's own {folder}")
+    finally:
+        if held is not None:
+            os.close(held)
+
+
+def own_proc(lib, missing):
+    """A /proc of the PID namespace (called by its first process): the host's shows every
+    process of the machine and its command line."""
+    import ctypes
+    if "proc" in switched_off() or not call(lib, "mount", b"proc", b"/proc", b"proc",
+                                             ctypes.c_ulong(MS_NOSUID | MS_NODEV | MS_NOEXEC), None):
+        missing.append("proc")
 
 
 def set_limits(config, missing):
@@ -197,11 +239,12 @@ def become_program(lib, config, in_userns, said):
             # Inside a user namespace we are its root: we could uncover the covered
             # folders again, and the program, owning its /proc files, could open its
             # own memory. A second user namespace, where we are no one, takes that away.
-            outer = os.geteuid()
+            # (Our ids are read before: inside the new namespace they are unmapped.)
+            outer_uid, outer_gid = os.geteuid(), os.getegid()
             if call(lib, "unshare", CLONE_NEWUSER | CLONE_NEWNS):
                 Path("/proc/self/setgroups").write_text("deny")
-                Path("/proc/self/uid_map").write_text(f"1000 {outer} 1")
-                Path("/proc/self/gid_map").write_text(f"1000 {os.getegid()} 1")
+                Path("/proc/self/uid_map").write_text(f"1000 {outer_uid} 1")
+                Path("/proc/self/gid_map").write_text(f"1000 {outer_gid} 1")
         if lib is not None:
             call(lib, "prctl", PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0)
             call(lib, "prctl", PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
@@ -382,7 +425,7 @@ def kill_user(uid, deadline):
 def remove_files_of(uid, keep):
     """Removes what the user left in the shared temporary folders (its scratch folder,
     `keep`, is the grader's to read and remove)."""
-    for top in ("/tmp", "/var/tmp", "/dev/shm"):
+    for top in PRIVATE:
         for folder, subfolders, files in os.walk(top, topdown=False):
             if os.path.commonpath([folder, keep]) == keep:
                 continue
@@ -407,8 +450,10 @@ def run(config):
     if "limits" in off:
         missing.append("limits")
     in_pidns, mounts, in_userns = enter_namespaces(lib, config, missing)
-    if not in_pidns and "mount" not in missing and config.get("hide"):
+    if not mounts and "mount" not in missing:
         missing.append("mount")
+    if not (mounts and in_pidns) and "proc" not in missing:
+        missing.append("proc")
     report_read, report_write = os.pipe()
     # What the program's child could not set up. Python's pipes are closed on exec
     # already (PEP 446), so the program never holds this one; os.pipe2 is Linux's only.
@@ -417,7 +462,10 @@ def run(config):
     if first == 0:
         os.close(report_read)
         if mounts:
-            cover(lib, config["hide"], missing)
+            cover(lib, config.get("hide", []), missing)
+            make_private(lib, config.get("keep"), missing)
+            if in_pidns:
+                own_proc(lib, missing)
         if not in_pidns:
             os.close(said_read)
             become_program(lib, config, False, said_write)
@@ -489,7 +537,9 @@ def main(argv):
 NOTES = {
     "user": "no user of its own (the grader is not root): the code can read and write what you can",
     "pidns": "no PID namespace (unshare not permitted): processes it leaves are killed one by one",
-    "mount": "the tree is not covered (no mount namespace): the code can read it",
+    "mount": "the tree is not covered (no mount namespace): the code can read it, and what it leaves in /tmp, "
+             "/dev/shm or /run/lock stays after grading",
+    "proc": "no /proc of its own: the code can see every process of the machine",
     "subreaper": "no subreaper: a process the code detaches may outlive grading",
     "limits": "no resource limits: memory, processes and file size are unlimited",
     "seccomp": "no seccomp filter: only the test program's own flag keeps other processes out of its memory",

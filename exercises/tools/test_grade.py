@@ -8,6 +8,7 @@ are not UTF-8, leave a child process behind.
 """
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -358,6 +359,85 @@ class Users(unittest.TestCase):
             self.assertFalse(sandbox.others_of(uid), "every process of the user is gone")
         finally:
             os.close(lock)
+
+
+# A test program that reports what it sees of the machine: whether /proc is its own (the
+# shell's pid by /proc's count is the one it knows itself by), how much of 256 MB (eight
+# files under the file limit) it could write into /dev/shm, and it leaves a file in every
+# folder anyone may write.
+PROBE = """#!/bin/sh
+read -r pid rest < /proc/self/stat
+[ "$pid" = "$$" ] && echo "proc: own" || echo "proc: the machine's"
+k=0
+while [ $k -lt 8 ] && dd if=/dev/zero of=/dev/shm/%(mark)s-$k bs=1M count=32 2>/dev/null; do k=$((k + 1)); done
+echo "shm: $((k * 32)) MB"
+for d in /tmp /var/tmp /dev/shm /run/lock; do echo left > $d/%(mark)s 2>/dev/null; done
+echo "user: $(id -u)"
+"""
+
+
+def probe(folder, runner):
+    """(what the probe printed, the files it left behind outside the sandbox)."""
+    mark = f"gi-probe-{os.getpid()}-{time.monotonic_ns()}"
+    path = Path(folder) / "probe.sh"
+    path.write_text(PROBE % {"mark": mark})
+    path.chmod(0o755)
+    code, output = runner.launch([str(runner.copy(path))], 20, (), runner.scratch())
+    left = [f for d in ("/tmp", "/var/tmp", "/dev/shm", "/run/lock") for f in Path(d).glob(mark + "*")]
+    for f in left:
+        f.unlink()
+    return code, output, left
+
+
+@unittest.skipUnless(sys.platform.startswith("linux"), "the sandbox's namespaces are Linux's")
+class PrivateFolders(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        Path(self.tmp.name).chmod(0o755)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_shared_folders_and_proc_are_the_runs_own_and_gone_after_it(self):
+        with gtest_run.Runner() as runner:
+            code, output, left = probe(self.tmp.name, runner)
+            missing = set(runner.missing)
+        self.assertEqual(code, 0, output)
+        if "mount" in missing:
+            self.skipTest("no mount namespace here")
+        self.assertEqual(left, [], "files the program wrote outlived it")
+        self.assertLessEqual(int(output.split("shm: ")[1].split()[0]), 64, "shared memory is capped at 64 MB")
+        if "proc" not in missing:
+            self.assertIn("proc: own", output)
+
+    @unittest.skipUnless(os.geteuid() == 0, "becoming a user without root needs root first")
+    def test_a_student_without_root_is_graded_in_a_user_namespace(self):
+        """exercises/grade as a student runs it: not root, so the namespaces come from a
+        user namespace of its own (the ids mapped into the program's second namespace
+        must be read before it is entered)."""
+        script = ("import json, sys; sys.path.insert(0, sys.argv[1]); import test_grade, gtest_run\n"
+                  "with gtest_run.Runner() as r:\n"
+                  "    code, output, left = test_grade.probe(sys.argv[2], r)\n"
+                  "print(json.dumps([code, output, [str(f) for f in left], sorted(r.missing)]))\n")
+        python = shutil.which("python3", path="/usr/bin:/bin")
+        if python is None:
+            self.skipTest("no python3 in /usr/bin or /bin for another user to run")
+        tools = Path(self.tmp.name) / "tools"  # a copy the user may read wherever this tree is
+        shutil.copytree(Path(__file__).parent, tools, ignore=shutil.ignore_patterns("__pycache__"))
+        subprocess.run(["chmod", "-R", "a+rX", str(tools)], check=True)
+        home = Path(self.tmp.name) / "student"
+        home.mkdir()
+        home.chmod(0o777)
+        done = subprocess.run([python, "-c", script, str(tools), str(home)],
+                              capture_output=True, text=True, timeout=60, env={"PATH": "/usr/bin:/bin", "HOME": "/"},
+                              preexec_fn=lambda: (os.setgroups([]), os.setgid(65534), os.setuid(65534)))
+        self.assertEqual(done.returncode, 0, done.stderr[-2000:])
+        code, output, left, missing = json.loads(done.stdout.splitlines()[-1])
+        self.assertEqual(code, 0, f"the program did not start: {output}")
+        self.assertIn("user: 1000\n", output, "it is no one in a namespace of its own, not the namespace's root")
+        if "pidns" not in missing:
+            self.assertEqual(left, [], "files the program wrote outlived it")
+            self.assertIn("proc: own", output)
 
 
 class Hints(unittest.TestCase):
