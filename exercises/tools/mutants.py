@@ -1,7 +1,8 @@
 """mutants: tests of the graded tests. Each mutant is a realistic student bug planted
 in one exercise region of the reference; the graded tests of that exercise must fail.
 
-    exercises/tools/mutants.py [--work DIR] [--only ID,...] [--jobs N] [--min-caught 0.95] [FILE.mut ...]
+    exercises/tools/mutants.py [--work DIR] [--only ID,...] [--jobs N] [--min-caught 0.95]
+                               [--name-first] [FILE.mut ...]
 
 The mutants (exercises/mutants/*.mut, or the files named) are built against a copy of
 the tree in WORK/src, whose build in WORK/build holds the reference's graded programs.
@@ -15,19 +16,24 @@ of the mutant's exercise fails. A mutant that no longer applies (its lines are n
 found, exactly once, inside its region) or no longer compiles is an error, never
 "caught". The report lists per mutant the tests that caught it, the first hint a
 student would read, and visible tests of *other* exercises that failed too (one bug
-charged twice). Exit status: 0 when at least --min-caught of the mutants are caught
-and all apply, 1 otherwise, 2 for a bad command line.
+charged twice). Exit status: 0 when at least --min-caught of the mutants are caught,
+all apply, and each one's first failing test is the one its '>' line names; 1
+otherwise, 2 for a bad command line.
 
 Format of a .mut file (lines starting with '#' are comments):
 
     == 1.1 far-root-first
     Returns the far root of the quadratic first.
+    > Ex1_1_RaySphere.ReturnsTheNearerRootFromOutside
     @ lib/gi/geometry/sphere.cpp
     -   double t = (-h - root) / a;
     +   double t = (-h + root) / a;
 
 '== EXERCISE NAME' opens a mutant of that exercise's region, free text says what the
-student did, '@ FILE' names the file holding the region. Then hunks: '-' lines are
+student did, '> TEST' names the test that must fail first (its hint is the first a
+student reads, so it must name this bug's cause: the graded tests are ordered so that
+it does), '@ FILE' names the file holding the region. --name-first writes the '>' line
+of every caught mutant that has none, from the run. Then hunks: '-' lines are
 found in the region as consecutive lines (compared without their indentation) and
 replaced by the '+' lines that follow (indented like the first line found). A
 mutant may have several hunks.
@@ -64,6 +70,7 @@ class Mutant:
     name: str
     where: str                  # file:line of the '==' line
     why: str = ""
+    first: str = ""             # the test that must fail first
     file: str = ""
     hunks: list = field(default_factory=list)  # [(search lines, replacement lines)]
 
@@ -92,6 +99,10 @@ def parse(text, origin):
             raise MutantError(f"{where}: text before the first '== EXERCISE NAME' line")
         elif line.startswith("@ "):
             found[-1].file = line[2:].strip()
+        elif line.startswith("> "):
+            if found[-1].first or found[-1].hunks:
+                raise MutantError(f"{where}: one '> TEST' line per mutant, before its hunks")
+            found[-1].first = line[2:].strip()
         elif line[:1] in "-+" and line[:2] in ("- ", "+ ", "-", "+"):
             if not found[-1].file:
                 raise MutantError(f"{where}: a hunk before '@ FILE'")
@@ -154,6 +165,12 @@ class Verdict:
     elsewhere: list     # failing tests of other exercises
     hint: str           # what the first failing test tells the student
     problem: str = ""   # does not apply / does not compile
+
+    @property
+    def wrong_first(self):
+        """The test that failed first, when it is not the one the mutant names."""
+        first = self.caught_by[0] if self.caught_by else ""
+        return first if self.mutant.first and first and first != self.mutant.first else ""
 
 
 def verdict(mutant, results, problem):
@@ -308,6 +325,8 @@ def main(argv):
     parser.add_argument("--min-caught", type=float, default=0.95)
     parser.add_argument("--timeout", type=grade.positive_seconds, default=None)
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="mutants built and graded at once")
+    parser.add_argument("--name-first", action="store_true",
+                        help="write each caught mutant's first failing test as its '>' line where it has none")
     args = parser.parse_args(argv)
     files = args.files or sorted((ROOT / "exercises" / "mutants").glob("*.mut"))
     try:
@@ -334,6 +353,8 @@ def main(argv):
         print(f"[{len(verdicts)}/{len(mutants)}] {v.mutant.id:<45} {status}{extra}", flush=True)
         if v.hint:
             print(f"        hint: {v.hint[:160]}", flush=True)
+        if v.wrong_first:
+            print(f"        FIRST FAILS {v.wrong_first}, not {v.mutant.first}", flush=True)
 
     # The course's own code, run without the sandbox; each mutant in an overlay of its own.
     runner = gtest_run.Runner(isolate=False)
@@ -360,7 +381,35 @@ def main(argv):
             print(f"  not caught: {v.mutant.id} ({v.mutant.where}): {v.problem or v.mutant.why}")
     charged_twice = [v for v in verdicts if v.elsewhere]
     print(f"charged twice (tests of another exercise fail too): {len(charged_twice)}")
-    return 0 if fraction >= args.min_caught and not broken else 1
+    misled = [v for v in verdicts if v.wrong_first]
+    for v in misled:
+        print(f"  first hint from the wrong test: {v.mutant.id} ({v.mutant.where}): {v.wrong_first} fails "
+              f"before {v.mutant.first}")
+    unnamed = [v for v in verdicts if v.caught_by and not v.mutant.first]
+    if args.name_first and unnamed:
+        name_first(unnamed)
+    elif unnamed:
+        print(f"  {len(unnamed)} caught mutants name no first test ('> TEST'; --name-first writes them)")
+    print(f"first hint from the test each mutant names: {len(caught) - len(misled) - len(unnamed)} of {len(caught)}")
+    return 0 if fraction >= args.min_caught and not broken and not misled else 1
+
+
+def name_first(verdicts):
+    """Writes '> TEST' (the test that failed first) under each mutant's '==' line."""
+    by_file = {}
+    for v in verdicts:
+        file, line = v.mutant.where.rsplit(":", 1)
+        by_file.setdefault(file, []).append((int(line), v.caught_by[0]))
+    for name, insertions in by_file.items():
+        path = ROOT / "exercises" / "mutants" / name
+        lines = path.read_text().splitlines(keepends=True)
+        for line, test in sorted(insertions, reverse=True):
+            at = line  # after the '==' line and the free text that follows it
+            while at < len(lines) and lines[at].strip() and lines[at][:2] not in ("@ ", "- ", "+ ", "> "):
+                at += 1
+            lines.insert(at, f"> {test}\n")
+        path.write_text("".join(lines))
+        print(f"  named the first failing test of {len(insertions)} mutants in {path.relative_to(ROOT)}")
 
 
 if __name__ == "__main__":

@@ -275,8 +275,26 @@ Triples instead of doubling.
         [m] = mutants.parse(self.TEXT, "t.mut")
         self.assertIn("x + x + x", mutants.apply(outside, m), "only the line inside the region counts")
 
+    def test_the_first_failing_test_must_be_the_named_one(self):
+        [m] = mutants.parse(self.TEXT.replace("@ a.cpp", "> Ex3_1_Twice.Doubles\n@ a.cpp"), "t.mut")
+        self.assertEqual(m.first, "Ex3_1_Twice.Doubles")
+        named = mutants.Verdict(m, ["Ex3_1_Twice.Doubles", "Ex3_1_Twice.Zero"], [], "doubles")
+        self.assertEqual(named.wrong_first, "")
+        misled = mutants.Verdict(m, ["Ex3_1_Twice.Zero", "Ex3_1_Twice.Doubles"], [], "zero")
+        self.assertEqual(misled.wrong_first, "Ex3_1_Twice.Zero", "another test's hint is read first")
+        self.assertEqual(mutants.Verdict(m, [], [], "").wrong_first, "", "not caught is said elsewhere")
+
+    def test_every_mutant_in_the_repository_names_its_first_failing_test(self):
+        tests = {}
+        for m in mutants.load(sorted((ROOT / "exercises" / "mutants").glob("*.mut"))):
+            self.assertRegex(m.first, rf"^Ex{m.exercise.replace('.', '_')}_\w+\.\w+$", m.id)
+            if m.lab not in tests:
+                tests[m.lab] = {name for name, _ in grade.source_tests(ROOT, m.lab)}
+            self.assertIn(m.first, tests[m.lab], f"{m.id}: no graded test of that name")
+
     def test_malformed_files(self):
-        for bad in ("stray text\n", "== 3.1\n", "== 3.1 x\n@ a.cpp\n", "== 3.1 x\n- y\n"):
+        for bad in ("stray text\n", "== 3.1\n", "== 3.1 x\n@ a.cpp\n", "== 3.1 x\n- y\n",
+                    "== 3.1 x\n> A.B\n> A.C\n@ a.cpp\n- y\n", "== 3.1 x\n@ a.cpp\n- y\n> A.B\n"):
             with self.assertRaises(mutants.MutantError):
                 mutants.parse(bad, "t.mut")
 
