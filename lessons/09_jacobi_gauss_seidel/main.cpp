@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gi/core/timer.hpp"
+#include "gi/radiosity/display/display.hpp"
 #include "gi/radiosity/form_factors/form_factor_hemicube.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/system/solvers.hpp"
@@ -76,6 +77,31 @@ void cost_and_convergence(const std::vector<const gi::SolverResult*>& results, g
   lesson.table(cost, "cost");
 }
 
+// 3. What an iteration does to the picture: the room after 1, 2, 4 and 8 iterations of
+// each solver, a row per solver (their errors are rows 1, 2, 4 and 8 of step 1's
+// table). Jacobi's k-th picture holds the light of k - 1
+// bounces, no more; in Gauss-Seidel's the elements later in a sweep already gather
+// the light this sweep gave the earlier ones.
+void iteration_grid(const gi::RadiosityScene& scene, const gi::Mesh& mesh, const gi::RadiositySystem& system,
+                    gi::SolverOptions settings, double omega, int iterations, gi::Lesson& lesson) {
+  std::vector<int> counts;
+  for (int k = 1; k <= std::min(iterations, 8); k *= 2) counts.push_back(k);
+  std::vector<std::vector<gi::Color>> solutions;
+  for (double relax : {0.0, 1.0, omega})  // 0: Jacobi
+    for (int k : counts) {
+      settings.max_steps = k;
+      solutions.push_back(relax == 0 ? gi::solve_jacobi(system, settings).B
+                                     : gi::solve_gauss_seidel(system, settings, relax).B);
+    }
+  std::string after;
+  for (int k : counts) after += (after.empty() ? "" : ", ") + std::to_string(k);
+  const int columns = static_cast<int>(counts.size());
+  const gi::Image grid = gi::solutions_grid(mesh, solutions, columns, scene.camera, 128, lesson.seed(), lesson.threads());
+  lesson.diagram(grid, "iterations_grid",
+                 "the room after " + after + " iterations (left to right) of Jacobi, Gauss-Seidel and SOR (top to "
+                 "bottom); their errors are the per-iteration table's");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -117,6 +143,7 @@ int main(int argc, char** argv) {
 
     per_iteration(results, omega, lesson);
     cost_and_convergence(results, lesson);
+    iteration_grid(scene, mesh, system, settings, omega, iterations, lesson);
 
     for (bool error : {false, true}) {
       const std::string what = error ? "error" : "residual";

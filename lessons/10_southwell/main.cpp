@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "gi/radiosity/display/display.hpp"
 #include "gi/radiosity/form_factors/form_factor_hemicube.hpp"
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/system/solvers.hpp"
@@ -76,6 +77,32 @@ void equal_work(const gi::SolverResult& jacobi, const gi::SolverResult& gauss_se
              std::to_string(n));
 }
 
+// 3. Equal work as pictures: the room after 1, 2, 4 and 8 sweeps of work of Jacobi,
+// Gauss-Seidel and Southwell (k n steps), a row per solver (their errors are step 2's
+// table). Southwell's first steps go to the light and to what
+// it lights most: the walls brighten where the light lands before the rest catch up.
+void work_grid(const gi::RadiosityScene& scene, const gi::Mesh& mesh, const gi::RadiositySystem& system,
+               gi::SolverOptions settings, int sweeps, gi::Lesson& lesson) {
+  const int n = system.size();
+  std::vector<int> counts;
+  for (int k = 1; k <= std::min(sweeps, 8); k *= 2) counts.push_back(k);
+  std::vector<std::vector<gi::Color>> solutions;
+  for (int solver = 0; solver < 3; ++solver)
+    for (int k : counts) {
+      settings.max_steps = solver == 2 ? k * n : k;
+      solutions.push_back(solver == 0   ? gi::solve_jacobi(system, settings).B
+                          : solver == 1 ? gi::solve_gauss_seidel(system, settings).B
+                                        : gi::solve_southwell(system, settings).B);
+    }
+  std::string after;
+  for (int k : counts) after += (after.empty() ? "" : ", ") + std::to_string(k);
+  const int columns = static_cast<int>(counts.size());
+  const gi::Image grid = gi::solutions_grid(mesh, solutions, columns, scene.camera, 128, lesson.seed(), lesson.threads());
+  lesson.diagram(grid, "work_grid",
+                 "the room after " + after + " sweeps of work (left to right) of Jacobi, Gauss-Seidel and Southwell "
+                 "(top to bottom; a sweep of Southwell's is n steps); their errors are the equal-work table's");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -110,6 +137,7 @@ int main(int argc, char** argv) {
                " form factors)\n");
     southwell_table(southwell, n, sweeps, lesson);
     equal_work(jacobi, gauss_seidel, southwell, n, sweeps, lesson);
+    work_grid(scene, mesh, system, settings, sweeps, lesson);
 
     lesson.chart({"Error against work (1 sweep = n^2 multiply-adds = n Southwell steps)", "sweeps of work",
                   "RMS error / RMS B", false, true,

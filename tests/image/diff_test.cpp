@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <vector>
 
 TEST(Diff, BlackWhereEqualRedAtTheLargestDifference) {
   gi::Image a(3, 1, gi::Pixel(0.5f)), b = a;
@@ -41,4 +42,21 @@ TEST(Diff, CropEnlargeSideBySide) {
   EXPECT_EQ(s.at(4, 0), gi::Pixel(0.5f));
   EXPECT_EQ(s.at(5, 0), gi::Pixel(1));
   EXPECT_EQ(s.at(5, 2), gi::Pixel(0.5f));  // below the shorter image: gap colour
+}
+
+TEST(Diff, ImageGridReadsLeftToRightThenTopToBottom) {
+  std::vector<gi::Image> images;
+  for (int k = 0; k < 5; ++k) images.emplace_back(2, 3, gi::Pixel(0.1f * static_cast<float>(k + 1)));
+  const gi::Image g = gi::image_grid(images, 2, 1, gi::Pixel(1));
+  EXPECT_EQ(g.width, 2 + 1 + 2);
+  EXPECT_EQ(g.height, 3 * 3 + 2 * 1);  // three rows, the last holding one image
+  EXPECT_EQ(g.at(0, 0), images[0].at(0, 0));
+  EXPECT_EQ(g.at(3, 0), images[1].at(0, 0));
+  EXPECT_EQ(g.at(0, 4), images[2].at(0, 0));
+  EXPECT_EQ(g.at(4, 6), images[3].at(1, 2));
+  EXPECT_EQ(g.at(1, 8), images[4].at(1, 0));
+  EXPECT_EQ(g.at(3, 8), gi::Pixel(1));  // beside the last row's one image: gap colour
+  EXPECT_EQ(g.at(0, 3), gi::Pixel(1));  // between rows
+  EXPECT_THROW(gi::image_grid(images, 0), std::invalid_argument);
+  EXPECT_THROW(gi::image_grid({}, 2), std::invalid_argument);
 }

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -75,6 +77,25 @@ TEST(Display, TheLinearPictureIsNotClampedAndTheShownOneIs) {
   const gi::RadiosityPicture plain = gi::render_radiosity_picture(scene, mesh, B, inside, settings, 1, 0);
   EXPECT_EQ(plain.shown.pixels, plain.radiance.pixels);
   EXPECT_EQ(gi::describe_pixel_samples(settings), "2 x 2 jittered eye rays, box filter");
+}
+
+TEST(Display, ASolutionsGridHoldsEachPictureWhereItsRowAndColumnSay) {
+  // Three uniform rooms, B = 1, 2, 4, two to a row: picture k is L = B / pi, shown
+  // clamped to white = 1, at column k % 2 and row k / 2, with white gaps between.
+  const gi::RadiosityScene box = gi::closed_box(1.0);
+  const gi::Mesh mesh = gi::make_mesh(box.surfaces, {0.5, 1});
+  std::vector<std::vector<gi::Color>> solutions;
+  for (double B : {1.0, 2.0, 4.0}) solutions.emplace_back(mesh.elements.size(), gi::Color(B));
+  const gi::Camera inside{{0.5, 0.5, 0.9}, {0.4, 0.3, 0.0}, {0, 1, 0}, 70};
+  const gi::Image grid = gi::solutions_grid(mesh, solutions, 2, inside, 8, 1, 0);
+  ASSERT_EQ(grid.width, 2 * 8 + 4);
+  ASSERT_EQ(grid.height, 2 * 8 + 4);
+  const auto shown = [](double B) { return std::min(B / gi::pi, 1.0); };  // L = B / pi, white at 1
+  EXPECT_NEAR(grid.at(4, 4).y, shown(1), 1e-5);
+  EXPECT_NEAR(grid.at(12 + 4, 4).y, shown(2), 1e-5);
+  EXPECT_NEAR(grid.at(4, 12 + 4).y, shown(4), 1e-6);
+  EXPECT_EQ(grid.at(12 + 4, 12 + 4), gi::Pixel(1));  // no fourth picture: the gap's white
+  EXPECT_EQ(grid.at(9, 4), gi::Pixel(1));             // between the columns
 }
 
 TEST(Display, PlyHoldsEveryVertexAndFaceAndRefusesNan) {

@@ -80,4 +80,24 @@ Image side_by_side(const std::vector<Image>& images, int gap, Pixel gap_colour) 
   return out;
 }
 
+Image image_grid(const std::vector<Image>& images, int columns, int gap, Pixel gap_colour) {
+  if (images.empty()) throw std::invalid_argument("image_grid: no images");
+  if (columns < 1) throw std::invalid_argument("image_grid: fewer than one column");
+  std::vector<Image> rows;
+  for (std::size_t first = 0; first < images.size(); first += columns) {
+    const std::size_t last = std::min(images.size(), first + columns);
+    rows.push_back(side_by_side({images.begin() + first, images.begin() + last}, gap, gap_colour));
+  }
+  int width = 0, height = -gap;
+  for (const Image& row : rows) width = std::max(width, row.width), height += row.height + gap;
+  Image out(width, height, gap_colour);
+  int y0 = 0;
+  for (const Image& row : rows) {
+    for (int y = 0; y < row.height; ++y)
+      for (int x = 0; x < row.width; ++x) out.at(x, y0 + y) = row.at(x, y);
+    y0 += row.height + gap;
+  }
+  return out;
+}
+
 }  // namespace gi

@@ -24,5 +24,8 @@ Image crop(const Image& image, int x, int y, int w, int h);  // throws if outsid
 Image enlarge(const Image& image, int factor);                // nearest neighbour
 // Images in one row, top-aligned, separated by `gap` pixels of `gap_colour`.
 Image side_by_side(const std::vector<Image>& images, int gap = 4, Pixel gap_colour = Pixel(1));
+// Images in rows of `columns` (the last row may be shorter), read left to right and top
+// to bottom, rows top-aligned and separated as side_by_side separates the images.
+Image image_grid(const std::vector<Image>& images, int columns, int gap = 4, Pixel gap_colour = Pixel(1));
 
 }  // namespace gi

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "gi/image/diff.hpp"
 #include "gi/radiosity/display/vertex_colours.hpp"
 
 namespace gi {
@@ -63,6 +64,18 @@ RadiosityPicture render_radiosity_picture(const FormFactorScene& scene, const Me
   const MeshRadiance radiance{scene, mesh, B, vertex_B, settings.shading};
   check(radiance);
   return render_display(radiance, camera, settings, seed, threads);
+}
+
+Image solutions_grid(const Mesh& mesh, const std::vector<std::vector<Color>>& solutions, int columns,
+                     const Camera& camera, int size, std::uint64_t seed, int threads) {
+  const FormFactorScene scene(element_shapes(mesh));
+  DisplaySettings settings;
+  settings.width = settings.height = size;
+  settings.white = 1;  // anti-aliased edges on the light (DisplaySettings::white)
+  std::vector<Image> pictures;
+  for (const std::vector<Color>& B : solutions)
+    pictures.push_back(render_radiosity_picture(scene, mesh, B, camera, settings, seed, threads).shown);
+  return image_grid(pictures, columns);
 }
 
 }  // namespace gi

@@ -73,6 +73,14 @@ RadiosityPicture render_radiosity_picture(const FormFactorScene& scene, const Me
 RadiosityPicture render_display(RadianceFunction radiance, const Camera& camera, const DisplaySettings& settings,
                                 std::uint64_t seed, int threads);
 
+// Several solutions of one mesh in a grid, `columns` to a row, read row by row, with a
+// white gap between: a solver's iterates side by side (lessons 09 and 10). Each picture
+// is `size` x `size` pixels of 2 x 2 jittered eye rays, smooth shading, shown as the
+// display shows it with white at radiance 1; every one draws from the same streams of
+// `seed`.
+Image solutions_grid(const Mesh& mesh, const std::vector<std::vector<Color>>& solutions, int columns,
+                     const Camera& camera, int size, std::uint64_t seed, int threads);
+
 // "2 x 2 jittered eye rays, box filter": how the display samples each pixel.
 std::string describe_pixel_samples(const DisplaySettings& settings);
 
