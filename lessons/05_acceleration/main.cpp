@@ -1,10 +1,10 @@
 // Lesson 05 -- bounding volumes and parallel computation. "Most work is spent testing
 // intersections": brute force against a box per object against a bounding volume
 // hierarchy, on 10 to 100 000 spheres; BVH throughput on a room of 100 000 quads, and
-// what each change to the tree and its walk buys there; and the render of every lesson
-// so far on 1, 2, ... threads, with the same bytes.
+// what each change to the tree and its walk buys there; the render of every lesson
+// so far on 1, 2, ... threads, with the same bytes; and the tree and its work as pictures.
 // Step 1 is here; the benches on the room of quads and on threads are in quad_room.cpp
-// and threads.cpp, the casting they share in casting.cpp.
+// and threads.cpp, the casting they share in casting.cpp, the pictures in pictures.cpp.
 #include <algorithm>
 #include <iostream>
 #include <string>
@@ -90,6 +90,7 @@ int main(int argc, char** argv) {
     lesson05::changes_table(room_quads, change_rays, lesson);
     std::cout << '\n';
     lesson05::threads_table(picture_scale, lesson);
-    lesson.say("\ntables and chart: " + lesson.out().string() + "/");
+    lesson05::pictures(std::min(max_spheres, 1000), 320, 240, lesson);
+    lesson.say("\ntables, chart and pictures: " + lesson.out().string() + "/");
   });
 }

@@ -34,4 +34,16 @@ Ray primary_ray(const CameraFrame& frame, double x, double y) {
   return Ray{frame.eye, normalize(frame.top_left + x * frame.right + y * frame.down)};
 }
 
+// The point's direction d from the eye meets the image plane (distance 1 along the
+// view direction f = right x down) at d / (d . f); its offsets from the top-left
+// corner along right and down, over their lengths, are x and y.
+std::optional<glm::dvec2> image_position(const CameraFrame& frame, const vec3& point) {
+  const vec3 forward = normalize(cross(frame.right, frame.down));
+  const vec3 d = point - frame.eye;
+  const double depth = dot(d, forward);
+  if (!(depth > 0)) return std::nullopt;
+  const vec3 q = d / depth - frame.top_left;
+  return glm::dvec2(dot(q, frame.right) / dot(frame.right, frame.right), dot(q, frame.down) / dot(frame.down, frame.down));
+}
+
 }  // namespace gi

@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+
 #include "gi/core/ray.hpp"
 
 namespace gi {
@@ -28,5 +30,10 @@ CameraFrame camera_frame(const Camera& camera, int width, int height);
 // The eye ray through image position (x, y), in pixels: (x + 0.5, y + 0.5) is the
 // centre of pixel (x, y). The direction is unit length.
 Ray primary_ray(const CameraFrame& frame, double x, double y);
+
+// Where a point appears in the image, in pixels (the inverse of primary_ray: the
+// point's direction from the eye, scaled to the image plane), or nothing for a point
+// not in front of the eye. For drawing a scene's lines over its picture.
+std::optional<glm::dvec2> image_position(const CameraFrame& frame, const vec3& point);
 
 }  // namespace gi
