@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "gi/raytrace/optics.hpp"
 #include "support/print.hpp"
@@ -22,10 +23,19 @@ TEST(Ex2_3_Fresnel, ExactValueAtSixtyDegrees) {
   const double rs = (ci - 1.5 * ct) / (ci + 1.5 * ct);
   const double rp = (1.5 * ci - ct) / (1.5 * ci + ct);
   const double f = gi::fresnel_dielectric(ci, 1.0, 1.5);
-  EXPECT_NEAR(f, 0.5 * (rs * rs + rp * rp), 1e-9)
-      << (std::abs(f - gi::fresnel_schlick(ci, 1.0, 1.5)) < 1e-6
-              ? "that is Schlick's approximation; the exercise is the exact Fresnel equations"
-              : "F = (r_s^2 + r_p^2) / 2, the average of the two polarisations (squared amplitudes)");
+  EXPECT_NEAR(f, 0.5 * (rs * rs + rp * rp), 1e-9) << [&]() -> std::string {
+    const std::string got = " (got F = " + testing::PrintToString(f) + ", want " +
+                            testing::PrintToString(0.5 * (rs * rs + rp * rp)) + ")";
+    if (std::abs(f - gi::fresnel_schlick(ci, 1.0, 1.5)) < 1e-6)
+      return "that is Schlick's approximation; the exercise is the exact Fresnel equations" + got;
+    if (std::abs(f - 1.0) < 1e-9)
+      return "F = 1 at 60 degrees from air into glass, as if totally reflected: Snell's law gives sin_t = (eta_i / "
+             "eta_t) sin_i = sin 60 / 1.5 = 0.577; the ratio upside down, eta_t / eta_i, gives 1.3 > 1" + got;
+    if (std::abs(f - rs * rs) < 1e-9)
+      return "F = r_s^2 alone: r_p is missing or written like r_s; r_p = (eta_t cos_i - eta_i cos_t) / (eta_t cos_i + "
+             "eta_i cos_t) = " + testing::PrintToString(rp) + " here, r_s = " + testing::PrintToString(rs) + got;
+    return "F = (r_s^2 + r_p^2) / 2, the average of the two polarisations (squared amplitudes)" + got;
+  }();
 }
 
 TEST(Ex2_3_Fresnel, BrewsterAngleHasNoPPolarisedReflection) {

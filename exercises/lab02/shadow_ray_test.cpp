@@ -3,6 +3,8 @@
 // depend on your lab 1 code.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "gi/core/rng.hpp"
 #include "gi/raytrace/shading.hpp"
 #include "support/print.hpp"
@@ -26,7 +28,13 @@ const double epsilon = 1e-6;
 TEST(Ex2_5_ShadowRay, DirectionIsUnitTowardsTheLight) {
   const gi::Ray ray = gi::shadow_ray({1, 0, 0}, {0, 1, 0}, {1, 8, 6}, epsilon);
   EXPECT_NEAR(gi::length(ray.direction), 1.0, 1e-9) << "normalise the direction to the light";
-  EXPECT_NEAR(gi::dot(ray.direction, gi::normalize(vec3(0, 8, 6))), 1.0, 1e-6) << "point the ray at the light";
+  const double offset = gi::length(ray.origin - vec3(1, 0, 0));
+  EXPECT_NEAR(gi::dot(ray.direction, gi::normalize(vec3(0, 8, 6))), 1.0, 1e-6)
+      << (offset > 10 * epsilon
+              ? "the ray starts " + testing::PrintToString(offset) + " from the surface point (at " +
+                    testing::PrintToString(ray.origin) + "), so from there the light lies in another direction: "
+                    "offset the origin by epsilon = 1e-6 along the normal, not more"
+              : std::string("point the ray at the light: direction = (light - origin) / |light - origin|"));
 }
 
 TEST(Ex2_5_ShadowRay, StartsJustOffTheSurface) {

@@ -31,8 +31,12 @@ TEST(Ex3_2_Adaptive, SmallDifferencesAreNotSplit) {
 
 TEST(Ex3_2_Adaptive, ADarkerCornerCountsToo) {
   // Mean 0.875: three corners are 0.125 above it, one is 0.375 below.
+  // The same corners with the dark one first: only the order changed, so must the answer not.
+  const bool dark_first = gi::should_subdivide({Color(0.5), Color(1.0), Color(1.0), Color(1.0)}, 0.2);
   EXPECT_TRUE(gi::should_subdivide({Color(1.0), Color(1.0), Color(1.0), Color(0.5)}, 0.2))
-      << "one corner is 0.375 darker than the mean: take the absolute difference";
+      << (dark_first ? "the last corner is 0.375 darker than the mean 0.875, more than 0.2: split. You split when "
+                       "the dark corner comes first but not when it comes last: check all four corners"
+                     : "one corner is 0.375 darker than the mean: take the absolute difference");
 }
 
 TEST(Ex3_2_Adaptive, EveryColourChannelCounts) {
@@ -47,9 +51,17 @@ TEST(Ex3_2_Adaptive, EveryColourChannelCounts) {
 
 TEST(Ex3_2_Adaptive, ChannelsAreNotAddedUp) {
   // Every channel 0.06 from its mean: below 0.1 in each, though 0.18 summed.
+  // The same corners in red only: no sum over channels can reach 0.1 there.
+  const bool red_only = gi::should_subdivide({Color(0.0, 0.0, 0.0), Color(0.12, 0.0, 0.0), Color(0.0, 0.0, 0.0),
+                                              Color(0.12, 0.0, 0.0)},
+                                             0.1);
   EXPECT_FALSE(gi::should_subdivide({Color(0.0), Color(0.12), Color(0.0), Color(0.12)}, 0.1))
-      << "each channel is 0.06 from its mean, below the threshold 0.1: no split. Take the largest channel's "
-         "difference, not the sum over channels";
+      << (red_only ? "the mean of the four corners is 0.06 and each is 0.06 from it, below the threshold 0.1: no split. "
+                     "You split even when only red changes, so you measure 0.12, the difference between two corners: "
+                     "compare each corner with the mean of the four, not with the first corner, nor take the "
+                     "brightest minus the darkest"
+                   : "each channel is 0.06 from its mean, below the threshold 0.1: no split. Take the largest "
+                     "channel's difference, not the sum over channels");
 }
 
 TEST(Ex3_2_Adaptive, TheThresholdIsStrict) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "gi/radiosity/form_factors/configuration_factors.hpp"
 #include "gi/radiosity/form_factors/form_factor_formulas.hpp"
@@ -14,11 +15,33 @@ namespace {
 const double pi = 3.14159265358979323846;
 }
 
+namespace {
+// Which slip gives f for two points facing each other straight on, r = 2 apart, A_j = 0.5.
+std::string facing_slip(double f) {
+  const double want = 0.5 / (4 * pi);
+  const auto near = [&](double v) { return std::abs(f - v) <= 1e-12 * std::abs(v); };
+  const std::string got = " (got F = " + testing::PrintToString(f) + ", want cos_i cos_j / (pi r^2) A_j = 1 * 1 / "
+                          "(pi * 4) * 0.5 = " + testing::PrintToString(want) + ")";
+  if (f == 0)
+    return "the points face each other, both cosines are 1, yet F = 0: with d = x_j - x_i, cos_i = n_i . d / r but "
+           "cos_j = -n_j . d / r (the receiver's cosine is measured towards x_i, hence the minus)" + got;
+  const double f_unit_area = gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, -1}, 1.0, 1.0);
+  if (near(f_unit_area))
+    return "F does not change when the receiver's area A_j goes from 0.5 to 1: multiply by A_j, the form factor "
+           "is to the receiver's patch, not to a point" + got;
+  if (near(4 * want))
+    return "F is 4 times too large, r^2 = 4: the cosines were taken with the raw difference x_j - x_i (length 2); "
+           "divide it by r first, so that each cosine is 1" + got;
+  if (near(pi * want)) return "F is pi times too large: F = cos_i cos_j / (pi r^2) A_j, did you forget the 1/pi?" + got;
+  if (near(2 * want)) return "F is 2 times too large, r = 2: divide by r^2, not by r" + got;
+  return "F = cos_i cos_j / (pi r^2) A_j: check the 1/pi and that r is squared" + got;
+}
+}  // namespace
+
 TEST(Ex6_1_Differential, FacingPointsStraightOn) {
   // Both cosines 1, r = 2, A_j = 0.5: F = 1 * 1 / (pi * 4) * 0.5.
-  EXPECT_NEAR(gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, -1}, 0.5, 1.0), 0.5 / (4 * pi),
-              1e-15)
-      << "F = cos_i cos_j / (pi r^2) A_j: check the 1/pi and that r is squared";
+  const double f = gi::form_factor_differential({0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, -1}, 0.5, 1.0);
+  EXPECT_NEAR(f, 0.5 / (4 * pi), 1e-15) << facing_slip(f);
 }
 
 TEST(Ex6_1_Differential, ObliqueUsesBothCosines) {

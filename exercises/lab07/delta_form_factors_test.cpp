@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <string>
 
 #include "gi/radiosity/form_factors/hemicube.hpp"
 #include "support/print.hpp"
@@ -17,8 +18,14 @@ const double top_share = 4.0 / pi * std::atan(1 / std::sqrt(2.0)) / std::sqrt(2.
 }  // namespace
 
 TEST(Ex7_1_DeltaTop, CentreCellIsAreaOverPi) {
-  EXPECT_NEAR(gi::delta_form_factor_top(0, 0, dA), dA / pi, 1e-15)
-      << "straight up both cosines are 1 and r = 1: dF = dA / pi (did you forget the 1/pi?)";
+  const double f = gi::delta_form_factor_top(0, 0, dA);
+  const std::string got = " (got " + testing::PrintToString(f) + ", want dA / pi = " + testing::PrintToString(dA / pi) +
+                          " for a cell of area dA = 0.0004)";
+  EXPECT_NEAR(f, dA / pi, 1e-15)
+      << (f != 0 && gi::delta_form_factor_top(0, 0, 2 * dA) == f
+              ? "straight up both cosines are 1 and r = 1: dF = dA / pi, but yours does not change when the cell's "
+                "area dA doubles: multiply by the cell's area" + got
+              : "straight up both cosines are 1 and r = 1: dF = dA / pi (did you forget the 1/pi?)" + got);
 }
 
 TEST(Ex7_1_DeltaTop, DenominatorIsSquared) {

@@ -1,6 +1,8 @@
 // Graded tests of exercise 8.1: vertex colours from element radiosities. One point per test.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
 #include "gi/radiosity/display/vertex_colours.hpp"
 #include "support/print.hpp"
@@ -65,7 +67,21 @@ TEST(Ex8_1_VertexColours, AVertexOfNoElementStaysBlack) {
 TEST(Ex8_1_VertexColours, AConstantFieldStaysConstant) {
   const gi::Mesh mesh = gi::make_mesh(gi::cornell_box().surfaces, {150.0, 2});
   const std::vector<Color> v = gi::vertex_radiosity(mesh, std::vector<Color>(mesh.elements.size(), Color(0.7)));
-  for (const Color& c : v) ASSERT_NEAR(c.y, 0.7, 1e-12) << "divide by the summed weights";
+  ASSERT_EQ(v.size(), mesh.vertices.size()) << "return one radiosity per mesh vertex, indexed like mesh.vertices";
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    // An element that lists vertex k, if any.
+    int owner = -1;
+    for (std::size_t e = 0; e < mesh.elements.size() && owner < 0; ++e)
+      for (int i : mesh.elements[e].vertices)
+        if (i == static_cast<int>(k)) owner = static_cast<int>(e);
+    ASSERT_NEAR(v[k].y, 0.7, 1e-12)
+        << "every element has B = 0.7, so every vertex must be 0.7; vertex " << k << " got " << v[k].y << ". "
+        << (v[k].y == 0 && owner >= 0
+                ? "Element " + std::to_string(owner) + " lists it as a corner, yet nothing reached it: add each "
+                      "element into the vertices it lists (element.vertices), not into another vertex found at "
+                      "the same position"
+                : std::string("Divide by the summed weights"));
+  }
 }
 
 TEST(Ex8_1_VertexColours, SurfacesDoNotBleedIntoEachOther) {

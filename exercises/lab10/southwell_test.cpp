@@ -68,6 +68,35 @@ std::string rule_of(const gi::RadiositySystem& s, const std::vector<Color>& r, i
   return "";
 }
 
+// Element j's residual after relaxing element 0 (r_0 = 2): the slip a wrong value
+// matches, or "". r_j += rho_j F_j0 r_0 is the update; rho_i is element 0's reflectance.
+std::string spread_slip(double got, const char* name, double r_j, double rho_j, double rho_i, double F_ji, double F_ij,
+                        int j, const char* F_ji_name, const char* F_ij_name) {
+  const double relaxed = 2.0;
+  const auto near = [&](double v) { return std::abs(got - v) < 1e-12; };
+  const std::string J = std::to_string(j);
+  const std::string values = std::string(name) + " = " + testing::PrintToString(got) + ", want " +
+                             testing::PrintToString(r_j) + " + rho_" + J + " " + F_ji_name + " r_0 = " +
+                             testing::PrintToString(r_j) + " + " + testing::PrintToString(rho_j) + " * " +
+                             testing::PrintToString(F_ji) + " * 2 = " +
+                             testing::PrintToString(r_j + rho_j * F_ji * relaxed) + ": ";
+  if (near(r_j + rho_j * F_ij * relaxed))
+    return values + "you spread through " + F_ij_name + " (row i of F); element j gathers from i through " +
+           F_ji_name + " (column i). ";
+  if (near(r_j + F_ji * relaxed))
+    return values + "you left out rho_" + J + ": what element " + J + " gathers is reflected by its reflectance. ";
+  if (near(r_j + rho_i * F_ji * relaxed))
+    return values + "you used rho_0, the relaxed element's reflectance; the light is reflected by the receiver, "
+                    "rho_" + J + ". ";
+  if (near(r_j))
+    return values + "r_" + J + " did not change: spread the residual r_0 you relax (keep a copy of it) before you "
+                    "set r_0 = 0, or you spread 0. ";
+  if (near(r_j - rho_j * F_ji * relaxed))
+    return values + "you subtracted: relaxing element 0 raises B_0 by r_0, so element " + J +
+           " gathers more, and its residual grows: r_j += rho_j F_j0 r_0. ";
+  return values;
+}
+
 // southwell_step's pick, and what is wrong with it (the matching slip first).
 void expect_pick(const gi::RadiositySystem& s, std::vector<Color> r, int want, const char* message) {
   std::vector<Color> B(s.size(), Color(0.0)), r_before = r;
@@ -112,8 +141,12 @@ TEST(Ex10_1_Southwell, UpdatesTheOthersThroughColumnI) {
   std::vector<Color> B(3, Color(0.0)), r = {Color(2.0), Color(0.1), Color(0.3)};
   gi::southwell_step(s, B, r);
   // r_j += rho_j F_j0 * 2: F_10 = 0.25, F_20 = 0.4 (not F_01 = 0.5, F_02 = 0.2).
-  EXPECT_NEAR(r[1].x, 0.1 + 0.8 * 0.25 * 2.0, 1e-12) << "element j gathers from i through F_ji (column i of F)";
-  EXPECT_NEAR(r[2].z, 0.3 + 0.9 * 0.4 * 2.0, 1e-12) << "and its own reflectance rho_j";
+  EXPECT_NEAR(r[1].x, 0.1 + 0.8 * 0.25 * 2.0, 1e-12)
+      << spread_slip(r[1].x, "r_1 (red)", 0.1, 0.8, 0.5, 0.25, 0.5, 1, "F_10", "F_01")
+      << "element j gathers from i through F_ji (column i of F), reflected by its own rho_j";
+  EXPECT_NEAR(r[2].z, 0.3 + 0.9 * 0.4 * 2.0, 1e-12)
+      << spread_slip(r[2].z, "r_2 (blue)", 0.3, 0.9, 0.3, 0.4, 0.2, 2, "F_20", "F_02")
+      << "element j gathers from i through F_ji (column i of F), reflected by its own rho_j";
 }
 
 TEST(Ex10_1_Southwell, ResidualStaysTheTrueResidual) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "gi/core/rng.hpp"
@@ -18,8 +19,17 @@ gi::ErrorAtSamples on_law(double v, double r, double spp) { return {spp, std::sq
 
 TEST(Ex15_1_MonteCarloVariance, OnePointWithAPerfectReference) {
   // r = 0: e^2 = v / N, so v = N e^2 = 4 x 0.1^2 = 0.04.
-  EXPECT_NEAR(gi::monte_carlo_variance({{4, 0.1}}, 0), 0.04, 1e-12)
-      << "the squared error falls as 1/N: v = N e^2 (not N e, not sqrt(N) e)";
+  const double v = gi::monte_carlo_variance({{4, 0.1}}, 0);
+  const auto near = [&](double x) { return std::abs(v - x) < 1e-12; };
+  EXPECT_NEAR(v, 0.04, 1e-12)
+      << (!std::isfinite(v)
+              ? "one point, N = 4 and e = 0.1, gives v = N e^2 = 0.04 on its own, but you got v = " +
+                    testing::PrintToString(v) + ": v is the plain mean of the v_k, their sum divided by the number "
+                    "of points n, not by n - 1 as for a sample variance (here n - 1 = 0)"
+              : "the squared error falls as 1/N: v = N e^2 = 4 x 0.1^2 = 0.04, got " + testing::PrintToString(v) +
+                    (near(0.4)    ? " = N e: square the error"
+                     : near(0.02) ? " = sqrt(N) e^2: it is the error that falls as 1/sqrt(N), its square as 1/N"
+                                  : std::string(" (not N e, not sqrt(N) e^2)")));
 }
 
 TEST(Ex15_1_MonteCarloVariance, PointsOnTheLawGiveItsV) {
