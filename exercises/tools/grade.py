@@ -28,6 +28,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import before_main  # noqa: E402
 import build      # noqa: E402
 import gtest_run  # noqa: E402
 import regions    # noqa: E402
@@ -130,6 +131,10 @@ def grade_program(runner, binary, lab, tests, limit, restubbed, hidden, together
     names = [n for n, _ in tests]
     if binary is None or not Path(binary).is_file():
         problem = "its test program was not built"
+        return failed_all(lab, tests, problem), problem
+    refused = before_main.refusal(binary)  # code placed to run before the harness takes its key
+    if refused:
+        problem = f"the lab's test program {refused}: none of its tests was run"
         return failed_all(lab, tests, problem), problem
     results, first = [], True
     exercises = list(dict.fromkeys(exercise_of(n, lab) for n in names))
