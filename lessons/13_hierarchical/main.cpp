@@ -169,6 +169,7 @@ int main(int argc, char** argv) {
     thresholds(s, chart, lesson);  // 1. above
     if (skip_studies) return;
     lesson13::links_against_leaves(s, lesson);   // 2. links_against_leaves.cpp
+    lesson13::where_it_cuts(s, lesson);          // 2b. where_it_cuts.cpp
     lesson13::uniform_meshes(s, chart, lesson);  // 3. uniform_meshes.cpp
     lesson.chart(chart, "error_time");
     lesson13::stability(s, lesson);        // 4. stability.cpp

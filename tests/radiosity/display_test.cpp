@@ -8,8 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
+#include "gi/radiosity/display/element_sizes.hpp"
 #include "gi/radiosity/display/vertex_colours.hpp"
 
 TEST(Display, AUniformRoomShowsItsRadianceEverywhere) {
@@ -96,6 +98,25 @@ TEST(Display, ASolutionsGridHoldsEachPictureWhereItsRowAndColumnSay) {
   EXPECT_NEAR(grid.at(4, 12 + 4).y, shown(4), 1e-6);
   EXPECT_EQ(grid.at(12 + 4, 12 + 4), gi::Pixel(1));  // no fourth picture: the gap's white
   EXPECT_EQ(grid.at(9, 4), gi::Pixel(1));             // between the columns
+}
+
+TEST(Display, ElementSizesColourEachElementByItsQuarterings) {
+  // A unit box cut into 2 x 2 elements a wall: every element is a quarter of the largest
+  // surface, log4(4) = 1. With top 0 (the mesh's largest) it shows red, the ramp's top;
+  // with top 2 green, the ramp's middle. Only the outlines differ.
+  const gi::RadiosityScene box = gi::closed_box(1.0);
+  const gi::Mesh mesh = gi::make_mesh(box.surfaces, {0.5, 1});
+  const gi::Camera inside{{0.5, 0.5, 0.9}, {0.4, 0.3, 0.0}, {0, 1, 0}, 70};
+  for (const auto& [top, colour] : {std::pair{0.0, gi::Pixel(1, 0, 0)}, std::pair{2.0, gi::Pixel(0, 1, 0)}}) {
+    const gi::ElementSizes sizes = gi::render_element_sizes(mesh, inside, 40, 30, top, 1);
+    EXPECT_DOUBLE_EQ(sizes.top, top == 0 ? 1.0 : top);
+    int coloured = 0;
+    for (const gi::Pixel& p : sizes.image.pixels) {
+      if (p == colour) ++coloured;
+      else EXPECT_LT(p.x + p.y + p.z, 1.0) << "every other pixel is an outline, darkened";
+    }
+    EXPECT_GT(coloured, 40 * 30 / 2);
+  }
 }
 
 TEST(Display, PlyHoldsEveryVertexAndFaceAndRefusesNan) {
