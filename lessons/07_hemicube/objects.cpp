@@ -29,22 +29,26 @@ std::vector<int> objects_of(const gi::Mesh& mesh, std::vector<std::string>& name
 }  // namespace
 
 // The white lines sit where one object's elements end and the next's begin: the mesh
-// lists them surface by surface.
+// lists them surface by surface, so each object's elements are one run of rows (and
+// columns), named beside them.
 void matrix_picture(const gi::Mesh& mesh, const gi::FormFactorMatrix& F, int resolution, gi::Lesson& lesson) {
   std::vector<double> logs(F.values.size());
   for (std::size_t k = 0; k < logs.size(); ++k) logs[k] = F.values[k] > 0 ? std::log10(F.values[k]) : -8;
-  gi::Image picture = gi::false_colour(logs, F.n, F.n, -6, -1);
+  gi::MatrixChart chart;
+  chart.title = "The form-factor matrix, element by element (hemicube " + std::to_string(resolution) + ")";
+  chart.picture = gi::false_colour(logs, F.n, F.n, -6, -1);
   std::vector<std::string> names;
   const std::vector<int> object = objects_of(mesh, names);
-  for (int i = 1; i < F.n; ++i)
-    if (object[i] != object[i - 1])
-      for (int k = 0; k < F.n; ++k) picture.at(i, k) = picture.at(k, i) = gi::Pixel(1);
-  std::string order;
-  for (const std::string& name : names) order += (order.empty() ? "" : ", ") + name;
-  lesson.diagram(picture, "form_factor_matrix",
-                 "log10 F_ij of the whole matrix (hemicube " + std::to_string(resolution) +
-                     "), black below 1e-6 to red at 0.1; rows (from) and columns (to) in the order " + order +
-                     ", white lines between them",
+  for (int i = 0; i < F.n; ++i)
+    if (i == 0 || object[i] != object[i - 1]) {
+      chart.groups.push_back(names[object[i]]);
+      chart.starts.push_back(i);
+      for (int k = 0; k < F.n && i > 0; ++k) chart.picture.at(i, k) = chart.picture.at(k, i) = gi::Pixel(1);
+    }
+  lesson.diagram(chart, "form_factor_matrix",
+                 "F_ij of the whole matrix (hemicube " + std::to_string(resolution) + ", " + std::to_string(F.n) +
+                     " elements): row i is what leaves element i, column j where it lands; black below 1e-6, white "
+                     "lines between objects",
                  gi::ColourScale{1e-6, 0.1, "form factor F_ij", true});
 }
 
@@ -74,6 +78,23 @@ void object_table(const gi::Mesh& mesh, const gi::FormFactorMatrix& F, const std
   }
   std::cout << '\n';
   lesson.table(table, "object_form_factors");
+
+  // The same table as a heat map, each cell's value written in it.
+  double largest = 0;
+  for (double f : objects.values) largest = std::max(largest, f);
+  const double top = std::max(0.1, std::ceil(10 * largest) / 10);
+  gi::MatrixChart chart;
+  chart.title = "Form factors between objects (hemicube " + std::to_string(resolution) + ")";
+  chart.picture = gi::false_colour(objects.values, objects.n, objects.n, 0, top);
+  chart.groups = names;
+  for (int g = 0; g < objects.n; ++g) {
+    chart.starts.push_back(g);
+    for (int h = 0; h < objects.n; ++h) chart.cells.push_back(gi::format_number(objects(g, h), 3, gi::Format::Fixed));
+  }
+  lesson.diagram(chart, "object_form_factors_map",
+                 "F_GH between the closed box's objects, the share of what leaves the row's object that lands on the "
+                 "column's: the table above as a heat map",
+                 gi::ColourScale{0, top, "form factor F_GH", false});
 }
 
 }  // namespace lesson07

@@ -1,7 +1,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "gi/image/image_io.hpp"
 
@@ -53,6 +57,20 @@ TEST(ImageIo, NanImagesAreRefusedNotWritten) {
   EXPECT_THROW(gi::write_png(image, temp("nan.png")), std::runtime_error);
   EXPECT_FALSE(std::filesystem::exists(temp("nan.png")));
   EXPECT_THROW(gi::read_png(temp("does_not_exist.png")), std::runtime_error);
+}
+
+TEST(ImageIo, EncodedPngIsTheFilesBytes) {
+  // The bytes an SVG embeds are those write_png puts in the file, exposure included.
+  const gi::Image image = ramp();
+  const auto file = temp("encoded.png");
+  gi::write_png(image, file, 2.0);
+  std::ifstream in(file, std::ios::binary);
+  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(gi::encode_png(image, 2.0), written);
+  EXPECT_NE(gi::encode_png(image, 1.0), written);
+  gi::Image bad = image;
+  bad.at(3, 2).x = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_THROW(gi::encode_png(bad), std::runtime_error);
 }
 
 TEST(ImageIo, PfmRoundTripIsExact) {

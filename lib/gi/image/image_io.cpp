@@ -10,6 +10,7 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -81,8 +82,10 @@ void to_stream(void* context, void* data, int size) {
 
 }  // namespace
 
-void write_png(const Image& image, const std::filesystem::path& file, double exposure, ToneMap mapping) {
-  check_finite(image, file);
+namespace {
+
+// The image's PNG bytes into `out`; false if stb could not encode them.
+bool png_to(std::ostream& out, const Image& image, double exposure, ToneMap mapping) {
   std::vector<std::uint8_t> bytes;
   bytes.reserve(image.pixels.size() * 3);
   for (const Pixel& p : image.pixels)
@@ -90,10 +93,23 @@ void write_png(const Image& image, const std::filesystem::path& file, double exp
   // The "Sub" row filter for every row: rendered images compress about as well as
   // with stb's per-row choice among all five filters, at two thirds of the time.
   stbi_write_force_png_filter = 1;
+  return stbi_write_png_to_func(to_stream, &out, image.width, image.height, 3, bytes.data(), image.width * 3) != 0;
+}
+
+}  // namespace
+
+void write_png(const Image& image, const std::filesystem::path& file, double exposure, ToneMap mapping) {
+  check_finite(image, file);
   write_atomically(file, [&](std::ostream& out) {
-    if (!stbi_write_png_to_func(to_stream, &out, image.width, image.height, 3, bytes.data(), image.width * 3))
-      throw WriteError("cannot encode " + file.string() + " as PNG");
+    if (!png_to(out, image, exposure, mapping)) throw WriteError("cannot encode " + file.string() + " as PNG");
   });
+}
+
+std::string encode_png(const Image& image, double exposure, ToneMap mapping) {
+  check_finite(image, "a picture to encode");
+  std::ostringstream out;
+  if (!png_to(out, image, exposure, mapping)) throw std::runtime_error("cannot encode a picture as PNG");
+  return out.str();
 }
 
 void write_hdr(const Image& image, const std::filesystem::path& file) {

@@ -30,6 +30,8 @@ float from_srgb8(std::uint8_t encoded);
 // infinite pixel: a garbage image is never written silently.
 void write_png(const Image& image, const std::filesystem::path& file, double exposure = 1.0,
                ToneMap tone_map = ToneMap::Clamp);
+// The same PNG's bytes, for a picture set inside another file (an SVG's data URL).
+std::string encode_png(const Image& image, double exposure = 1.0, ToneMap tone_map = ToneMap::Clamp);
 
 // Radiance HDR (RGBE), linear, no tone mapping: the values themselves.
 void write_hdr(const Image& image, const std::filesystem::path& file);

@@ -243,6 +243,17 @@ void Lesson::diagram(const Image& image, const std::string& stem, const std::str
   outputs_.back().colour_scale = scale;
 }
 
+void Lesson::diagram(const MatrixChart& chart, const std::string& stem, const std::string& caption,
+                     const ColourScale& scale) {
+  const MatrixSvg svg = matrix_svg(chart);
+  file(stem + ".svg", OutputKind::Diagram, caption, [&](const fs::path& p) {
+    write_atomically(p, [&](std::ostream& out) { out << svg.text; });
+  });
+  outputs_.back().width = svg.width;
+  outputs_.back().height = svg.height;
+  outputs_.back().colour_scale = scale;
+}
+
 void Lesson::table(const Table& table, const std::string& stem) {
   table.print();
   file(stem + ".csv", OutputKind::Table, table.title(), [&](const fs::path& p) { table.write_csv(p); });

@@ -8,6 +8,7 @@
 
 #include "gi/image/image.hpp"
 #include "gi/report/chart.hpp"
+#include "gi/report/matrix_chart.hpp"
 #include "gi/report/options.hpp"
 #include "gi/report/outputs.hpp"
 #include "gi/report/scene_options.hpp"
@@ -91,6 +92,8 @@ class Lesson {
   // mean -- the values at black and red, the quantity and its unit -- and the report
   // page draws it as a colour bar beneath the picture.
   void diagram(const Image& image, const std::string& stem, const std::string& caption, const ColourScale& scale);
+  // A labelled heat map (matrix_chart.hpp): stem.svg, shown as a false-colour diagram.
+  void diagram(const MatrixChart& chart, const std::string& stem, const std::string& caption, const ColourScale& scale);
   // Prints the table on stdout and writes stem.csv.
   void table(const Table& table, const std::string& stem);
   void chart(const Chart& chart, const std::string& stem);  // stem.svg

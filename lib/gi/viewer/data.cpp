@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "gi/core/atomic_file.hpp"
+#include "gi/core/base64.hpp"
 
 namespace gi {
 
@@ -29,18 +30,8 @@ class TypedArray {
   }
   void add_int(int v) { add(static_cast<std::uint32_t>(v)); }  // two's complement, as int32 reads it
   json finish() const {
-    static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string text;
-    text.reserve((bytes_.size() + 2) / 3 * 4);
-    for (std::size_t i = 0; i < bytes_.size(); i += 3) {
-      const std::size_t left = bytes_.size() - i;
-      const std::uint32_t group = bytes_[i] << 16 | (left > 1 ? bytes_[i + 1] << 8 : 0) | (left > 2 ? bytes_[i + 2] : 0);
-      text += digits[group >> 18 & 63];
-      text += digits[group >> 12 & 63];
-      text += left > 1 ? digits[group >> 6 & 63] : '=';
-      text += left > 2 ? digits[group & 63] : '=';
-    }
-    return {{"type", type_}, {"count", bytes_.size() / 4}, {"base64", std::move(text)}};
+    const std::string_view bytes(reinterpret_cast<const char*>(bytes_.data()), bytes_.size());
+    return {{"type", type_}, {"count", bytes_.size() / 4}, {"base64", base64(bytes)}};
   }
 
  private:
