@@ -115,6 +115,8 @@ int main(int argc, char** argv) {
     lesson06::hemicube_aliasing(lesson);
     std::cout << '\n';
     lesson06::error_against_time(sweep_rays, lesson);
-    lesson.say("\ntables and chart: " + lesson.out().string() + "/");
+    std::cout << '\n';
+    lesson06::one_row(base, lesson);
+    lesson.say("\ntables, chart and picture: " + lesson.out().string() + "/");
   });
 }

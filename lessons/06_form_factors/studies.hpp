@@ -1,7 +1,7 @@
 #pragma once
-// Lesson 06, steps 2 to 5, each a study of its own: where each method fails, as two
-// squares approach, the hemicube's aliasing (failures.cpp), and error against time
-// (error_against_time.cpp).
+// Lesson 06, steps 2 to 6, each a study of its own: where each method fails, as two
+// squares approach, the hemicube's aliasing (failures.cpp), error against time
+// (error_against_time.cpp), and one row of a room's matrix as a picture (one_row.cpp).
 #include "gi/radiosity/form_factors/form_factors.hpp"
 #include "gi/report/lesson.hpp"
 
@@ -19,5 +19,9 @@ void hemicube_aliasing(gi::Lesson& lesson);
 // The error_vs_time table and chart: each method over its parameter (Monte Carlo up to
 // `most_rays` rays) on two unit squares at d = 1.
 void error_against_time(int most_rays, gi::Lesson& lesson);
+
+// One row of the Cornell box's matrix painted on the room, by the hemicube and by the
+// analytic integral (one_row.cpp).
+void one_row(const gi::FormFactorSettings& base, gi::Lesson& lesson);
 
 }  // namespace lesson06

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "gi/image/diff.hpp"
-#include "gi/radiosity/display/element_sizes.hpp"
+#include "gi/radiosity/display/element_values.hpp"
 #include "gi/radiosity/hierarchical/hierarchical_run.hpp"
 #include "gi/radiosity/hierarchical/leaf_mesh.hpp"
 #include "gi/report/table.hpp"

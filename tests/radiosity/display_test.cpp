@@ -7,11 +7,12 @@
 #include <vector>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "gi/radiosity/mesh/radiosity_scenes.hpp"
-#include "gi/radiosity/display/element_sizes.hpp"
+#include "gi/radiosity/display/element_values.hpp"
 #include "gi/radiosity/display/vertex_colours.hpp"
 
 TEST(Display, AUniformRoomShowsItsRadianceEverywhere) {
@@ -117,6 +118,32 @@ TEST(Display, ElementSizesColourEachElementByItsQuarterings) {
     }
     EXPECT_GT(coloured, 40 * 30 / 2);
   }
+}
+
+TEST(Display, ElementValuesPaintEachElementAndWhitenTheHighlightedOne) {
+  // Values 10^-k on a log scale from 1e-4 to 1: the element of value 1 red, of 1e-4 (and
+  // of 0, clamped to lo) black but for its outline; the highlighted element white.
+  const gi::RadiosityScene box = gi::closed_box(1.0);
+  const gi::Mesh mesh = gi::make_mesh(box.surfaces, {0.5, 1});
+  const gi::Camera inside{{0.5, 0.5, 0.9}, {0.4, 0.3, 0.0}, {0, 1, 0}, 70};
+  std::vector<double> values(mesh.elements.size(), 1.0);
+  const gi::Image red = gi::render_element_values(mesh, values, inside, 40, 30, 1e-4, 1, true, 1);
+  const gi::Image marked = gi::render_element_values(mesh, values, inside, 40, 30, 1e-4, 1, true, 1, 0);
+  int reds = 0, whites = 0;
+  for (std::size_t k = 0; k < red.pixels.size(); ++k) {
+    reds += red.pixels[k] == gi::Pixel(1, 0, 0);
+    whites += marked.pixels[k] == gi::Pixel(1);
+    const gi::Pixel& p = marked.pixels[k];
+    if (p != red.pixels[k]) EXPECT_TRUE(p.x == p.y && p.y == p.z) << "only the highlighted element turns (white, or grey on its outline)";
+  }
+  EXPECT_GT(reds, 40 * 30 / 2);
+  EXPECT_GT(whites, 0) << "element 0 is in view";
+  std::fill(values.begin(), values.end(), 0.0);
+  for (const gi::Pixel& p : gi::render_element_values(mesh, values, inside, 40, 30, 1e-4, 1, true, 1).pixels)
+    EXPECT_EQ(p, gi::Pixel(0)) << "0 on a log scale is shown as lo, black";
+  EXPECT_THROW(gi::render_element_values(mesh, values, inside, 40, 30, 0, 1, true, 1), std::invalid_argument);
+  values.pop_back();
+  EXPECT_THROW(gi::render_element_values(mesh, values, inside, 40, 30, 1e-4, 1, true, 1), std::invalid_argument);
 }
 
 TEST(Display, PlyHoldsEveryVertexAndFaceAndRefusesNan) {
