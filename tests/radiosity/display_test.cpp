@@ -134,7 +134,9 @@ TEST(Display, ElementValuesPaintEachElementAndWhitenTheHighlightedOne) {
     reds += red.pixels[k] == gi::Pixel(1, 0, 0);
     whites += marked.pixels[k] == gi::Pixel(1);
     const gi::Pixel& p = marked.pixels[k];
-    if (p != red.pixels[k]) EXPECT_TRUE(p.x == p.y && p.y == p.z) << "only the highlighted element turns (white, or grey on its outline)";
+    if (p != red.pixels[k]) {
+      EXPECT_TRUE(p.x == p.y && p.y == p.z) << "only the highlighted element turns (white, or grey on its outline)";
+    }
   }
   EXPECT_GT(reds, 40 * 30 / 2);
   EXPECT_GT(whites, 0) << "element 0 is in view";
