@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """The course book: each chapter, docs/NN_topic.md, as a page a browser opens from
-file:// with no network, OUT/NN_topic/chapter.html beside the lesson's own page; and
-docs/README.md as the book's front page, OUT/book/index.html.
+file:// with no network, OUT/NN_topic/chapter.html beside the lesson's own page;
+docs/README.md as the book's front page, OUT/book/index.html; and the guides the
+chapters link (docs/architecture.md, viewer.md, scene_files.md, engineering.md) as
+OUT/book/GUIDE.html.
 
     make_book.py [--docs DIR] [--out DIR] [--katex DIR] [CHAPTER.md ...]
 
@@ -29,6 +31,7 @@ from chapter_html import anchor_headings, colour_code, markdown_to_html, page_ht
 
 HERE = Path(__file__).resolve().parent
 KATEX = Path("/usr/share/javascript/katex")  # Debian's libjs-katex
+GUIDES = ("architecture", "viewer", "scene_files", "engineering")  # docs/GUIDE.md, where it exists
 
 
 def missing_tool(katex):
@@ -66,12 +69,16 @@ def copy_assets(docs, katex, shared):
 
 
 def navigation(source, chapters, out, page_dir, shared):
-    """The links above a page's contents: the front page, the lesson's own page, and
-    the chapters before and after."""
+    """The links above a page's contents: for a chapter the front page, the lesson's
+    own page, and the chapters before and after; for a guide the front page and the
+    lessons; for the front page the lessons."""
     def link(target, text, kind):
         return f'<a class="{kind}" href="{Path(os.path.relpath(target, page_dir)).as_posix()}">{text}</a>'
-    if source not in chapters:
-        return f'<p>{link(out / "index.html", "every lesson, as run here", "lessons")}</p>'
+    lessons = link(out / "index.html", "every lesson, as run here", "lessons")
+    if source.name == "README.md":  # the front page
+        return f"<p>{lessons}</p>"
+    if source not in chapters:  # a guide
+        return f'<p>{link(shared / "index.html", "the course", "front")} &middot; {lessons}</p>'
     k = chapters.index(source)
     home = [link(shared / "index.html", "the course", "front"),
             link(page_dir / "index.html", f"lesson {source.stem[:2]}'s page", "lesson")]
@@ -102,6 +109,7 @@ def main():
     front = docs / "README.md"
     page_of = {c: out / c.stem / "chapter.html" for c in chapters}
     page_of[front] = shared / "index.html"
+    page_of.update({docs / f"{g}.md": shared / f"{g}.html" for g in GUIDES if (docs / f"{g}.md").is_file()})
     cmark = shutil.which("cmark-gfm")
     node = shutil.which("node") or shutil.which("nodejs")
 
@@ -128,7 +136,9 @@ def main():
     copy_assets(docs, args.katex, shared)
     for page, text in pages.items():
         write_whole(page, Equations.put_back(text, typeset))
-    print(f"book: {len(chapters)} chapter pages (out/NN_topic/chapter.html) and the front page {shared / 'index.html'}")
+    guides = len(page_of) - len(chapters) - 1
+    print(f"book: {len(chapters)} chapter pages (out/NN_topic/chapter.html), {guides} guides and the front page "
+          f"{shared / 'index.html'}")
     return 0
 
 

@@ -74,7 +74,8 @@ class Pages(unittest.TestCase):
         (self.docs / "01_one.md").write_text(
             "# 01 — One\n\n## The idea\n\nSee ![a](images/a.png), [two](02_two.md#the-idea), "
             "[lab](../exercises/lab01/README.md) and $x^2$.\n\n## The idea\n")
-        (self.docs / "02_two.md").write_text("# 02 — Two\n\n## The idea\n")
+        (self.docs / "02_two.md").write_text("# 02 — Two\n\n## The idea\n\nHow it is built: [the architecture](architecture.md).\n")
+        (self.docs / "architecture.md").write_text("# Architecture\n\nBack to [one](01_one.md#the-idea).\n")
 
     def tearDown(self):
         shutil.rmtree(self.folder)
@@ -91,6 +92,11 @@ class Pages(unittest.TestCase):
         self.assertIn('class="katex"', page)
         self.assertIn('href="../01_one/chapter.html"', (self.out / "book" / "index.html").read_text())
         self.assertTrue((self.out / "book" / "katex" / "katex.min.css").is_file())
+        # The guides the chapters link are pages of the book too, linked both ways.
+        self.assertIn('href="../book/architecture.html"', (self.out / "02_two" / "chapter.html").read_text())
+        guide = (self.out / "book" / "architecture.html").read_text()
+        self.assertIn('href="../01_one/chapter.html#the-idea"', guide)
+        self.assertIn('href="index.html"', guide, "a guide links the course's front page")
         self.assertEqual(list(self.out.rglob("*.tmp")), [], "no temporary file is left behind")
 
     def test_a_chapter_that_cannot_be_read_fails_with_one_line(self):
