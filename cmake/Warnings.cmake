@@ -2,6 +2,12 @@
 # lesson and test is built the same way.
 add_library(gi_flags INTERFACE)
 target_compile_options(gi_flags INTERFACE -Wall -Wextra -Wpedantic)
+# A backslash at the end of a // comment, even with blanks after it, splices the next
+# line into the comment: code that seems to run does not, or text that seems commented
+# out runs. Always an error, so that the compiler and the grader's text check of the
+# exercise regions (exercises/tools/cpp_text.py, which splices as GCC does) never
+# disagree about what a region holds.
+target_compile_options(gi_flags INTERFACE -Werror=comment)
 # Maths functions need not set errno (nobody reads it): sqrt and floor can then be
 # inlined instead of called. Results are unchanged -- this is not -ffast-math.
 target_compile_options(gi_flags INTERFACE -fno-math-errno)
