@@ -103,6 +103,7 @@ int main(int argc, char** argv) {
            100'000'000);
   return lesson.run(argc, argv, [&] {
     base.seed = lesson.seed();
+    lesson06::geometry_figure(lesson);
     double reference_ms = 0;
     const std::vector<Case> list = cases(reference_rays, reference_ms);
     every_method_every_case(list, base, lesson);

@@ -1,11 +1,15 @@
 #pragma once
-// Lesson 06, steps 2 to 6, each a study of its own: where each method fails, as two
+// Lesson 06, the figure of step 0 and steps 2 to 6, each a study of its own: where each method fails, as two
 // squares approach, the hemicube's aliasing (failures.cpp), error against time
 // (error_against_time.cpp), and one row of a room's matrix as a picture (one_row.cpp).
 #include "gi/radiosity/form_factors/form_factors.hpp"
 #include "gi/report/lesson.hpp"
 
 namespace lesson06 {
+
+// The figure of a form factor's geometry and of Nusselt's analogue, drawn from the
+// numbers they stand for, and those numbers (geometry_figure.cpp).
+void geometry_figure(gi::Lesson& lesson);
 
 // The failures table: one configuration per failure, each with an exact value.
 void where_each_method_fails(const gi::FormFactorSettings& base, gi::Lesson& lesson);

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "gi/core/atomic_file.hpp"
+#include "gi/report/svg_canvas.hpp"
 
 namespace gi {
 
@@ -16,23 +17,8 @@ namespace {
 // Okabe-Ito: distinguishable with the common colour-vision deficiencies.
 const char* const palette[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#F0E442"};
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
-
-std::string num(double v) {  // fixed formatting, independent of the locale
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.2f", v);
-  return buffer;
-}
+std::string escape(const std::string& s) { return svg_escape(s); }
+std::string num(double v) { return svg_number(v); }  // fixed formatting, independent of the locale
 
 // Ticks of everyday size read as %g (0.02, 300); on a log axis the very small and
 // very large as 2e-5, 1e6.

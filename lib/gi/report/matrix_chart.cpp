@@ -7,24 +7,18 @@
 
 #include "gi/core/base64.hpp"
 #include "gi/image/image_io.hpp"
+#include "gi/report/svg_canvas.hpp"
 
 namespace gi {
 
 namespace {
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : c == '"' ? "&quot;" : std::string(1, c);
-  return out;
-}
-
-std::string num(double v) {  // fixed formatting, independent of the locale
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.2f", v);
-  return buffer;
-}
+// Short names for the shared writers: the lines below are mostly numbers.
+std::string num(double v) { return svg_number(v); }
+std::string escape(const std::string& s) { return svg_escape(s); }
 
 }  // namespace
+
 
 MatrixSvg matrix_svg(const MatrixChart& chart, int side) {
   const int n = chart.picture.width;
@@ -44,10 +38,12 @@ MatrixSvg matrix_svg(const MatrixChart& chart, int side) {
   const int width = left + side + 16, height = top + side + 16;
   const double cell = static_cast<double>(side) / n;
   std::ostringstream os;
-  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\"" << num(height)
+  os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\""
+     << num(height)
      << "\" viewBox=\"0 0 " << num(width) << ' ' << num(height) << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-     << "<text x=\"" << num(width / 2.0) << "\" y=\"20\" text-anchor=\"middle\" font-size=\"15\">" << escape(chart.title)
+     << "<text x=\"" << num(width / 2.0) << "\" y=\"20\" text-anchor=\"middle\" font-size=\"15\">"
+     << escape(chart.title)
      << "</text>\n"
      << "<image x=\"" << num(left) << "\" y=\"" << num(top) << "\" width=\"" << side << "\" height=\"" << side
      << "\" preserveAspectRatio=\"none\" style=\"image-rendering: pixelated\" href=\"data:image/png;base64,"
