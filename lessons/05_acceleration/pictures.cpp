@@ -10,13 +10,14 @@
 
 #include "gi/accel/world.hpp"
 #include "gi/image/diff.hpp"
+#include "gi/render/scene_lines.hpp"
 #include "gi/scene/benchmark_scenes.hpp"
 #include "studies.hpp"
 
 namespace lesson05 {
 namespace {
 
-// The twelve edges of a box, each drawn as dots a quarter of a pixel apart.
+// The twelve edges of a box.
 void draw_box(gi::Image& image, const gi::CameraFrame& frame, const gi::Aabb& box, gi::Pixel colour) {
   const gi::vec3 corner[2] = {box.lo, box.hi};
   for (int axis = 0; axis < 3; ++axis)
@@ -27,15 +28,7 @@ void draw_box(gi::Image& image, const gi::CameraFrame& frame, const gi::Aabb& bo
         a[i] = corner[side][i];
         b[i] = i == axis ? corner[1][i] : a[i];
       }
-      const auto pa = gi::image_position(frame, a), pb = gi::image_position(frame, b);
-      const double length = pa && pb ? glm::length(*pb - *pa) : 0;
-      const int dots = std::min(100000, static_cast<int>(4 * length) + 2);
-      for (int j = 0; j <= dots; ++j) {
-        const auto p = gi::image_position(frame, glm::mix(a, b, double(j) / dots));
-        if (!p) continue;
-        const int x = static_cast<int>(std::floor(p->x)), y = static_cast<int>(std::floor(p->y));
-        if (x >= 0 && y >= 0 && x < image.width && y < image.height) image.at(x, y) = colour;
-      }
+      gi::draw_segment(image, frame, a, b, colour);
     }
 }
 

@@ -51,6 +51,7 @@ void at_the_lessons_threshold(const Setup& s, const gi::HierarchicalRun& run, co
                  "exact direct light per pixel, the rest gathered over the links at the leaves' corners",
                  {s.scene.camera, s.display.width, s.display.height, gi::describe_pixel_samples(s.display)},
                  s.exposure);
+  lesson13::one_leafs_links(s, run, final_gather.picture, lesson);  // one_leafs_links.cpp
   const gi::LeafMesh mesh = gi::leaf_mesh(run.hierarchy);
   const std::vector<gi::Color> B = gi::shown_radiosity(run);
   lesson.file("leaves.ply", gi::OutputKind::Mesh, "the leaves at the lesson's BF_eps, exact direct light, vertex "
