@@ -134,8 +134,8 @@ TEST(Lessons, HemicubeWritesItsPicturesAndTables) {
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("reciprocity"), std::string::npos);
   EXPECT_NE(r.output.find("sub-cell receivers"), std::string::npos);
-  for (const char* file : {"item_buffer.png", "delta_form_factors.png", "form_factor_matrix.png", "resolution.csv",
-                           "speed.csv"})
+  for (const char* file : {"item_buffer.png", "delta_form_factors.png", "form_factor_matrix.svg",
+                           "object_form_factors_map.svg", "resolution.csv", "speed.csv"})
     EXPECT_TRUE(fs::exists(out_dir("07") + "/" + file)) << file;
   EXPECT_EQ(run("07_hemicube", "--resolution 21").status, 2) << "odd resolutions are refused";
 }
