@@ -92,6 +92,7 @@ int main(int argc, char** argv) {
     // ray-cast rows that reach the same accuracy on the floor element of part 1.
     const gi::Mesh fine = gi::make_mesh(scene.surfaces, {gi::patch_size_for(scene.surfaces, speed_elements, 1), 1});
     lesson07::speed_table(fine, lesson07::floor_element(fine), speed_rays, lesson);
-    lesson.say("\nimages: " + lesson.out().string() + "/ (item_buffer.png, delta_form_factors.png, form_factor_matrix.png)");
+    lesson.say("\nimages: " + lesson.out().string() +
+               "/ (item_buffer.png, delta_form_factors.png, form_factor_matrix.svg, object_form_factors_map.svg)");
   });
 }
