@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "gi/accel/bvh_collapse.hpp"
@@ -73,15 +75,28 @@ struct FloatRay {
 // library's nextafter is a call, made at half the hits, and the call made the walk
 // save its vector registers around it. (f is never -0 where rounded up, nor +0 where
 // rounded down: a conversion keeps the sign of x.)
+// The bits are copied with std::memcpy, which compiles to one register move as
+// std::bit_cast does: the standard libraries of some toolchains still in use
+// (Emscripten 3.1's libc++) have no std::bit_cast.
+inline std::uint32_t float_bits(float f) {
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, sizeof bits);
+  return bits;
+}
+inline float float_of_bits(std::uint32_t bits) {
+  float f;
+  std::memcpy(&f, &bits, sizeof f);
+  return f;
+}
 inline float float_down(double x) {
   const auto f = static_cast<float>(x);
-  const auto bits = std::bit_cast<std::uint32_t>(f);
-  return f > x ? std::bit_cast<float>(f > 0 ? bits - 1 : bits + 1) : f;
+  const auto bits = float_bits(f);
+  return f > x ? float_of_bits(f > 0 ? bits - 1 : bits + 1) : f;
 }
 inline float float_up(double x) {
   const auto f = static_cast<float>(x);
-  const auto bits = std::bit_cast<std::uint32_t>(f);
-  return f < x ? std::bit_cast<float>(f < 0 ? bits - 1 : bits + 1) : f;
+  const auto bits = float_bits(f);
+  return f < x ? float_of_bits(f < 0 ? bits - 1 : bits + 1) : f;
 }
 
 [[maybe_unused]] FloatRay float_ray(const Ray& ray, float reach) {  // unread in a kit, whose walks are hidden

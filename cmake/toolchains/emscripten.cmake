@@ -1,0 +1,52 @@
+# WebAssembly, built by Emscripten's em++ (Debian: apt-get install emscripten) and run
+# by Node.js: each lesson becomes one file, build/wasm/bin/01_rays.js, that runs as
+#
+#   node build/wasm/bin/01_rays.js --out /tmp/out/01_rays
+#
+# and writes the same files the native program writes. The wasm preset uses this file.
+#
+# Emscripten's own CMake platform file does the work (compilers, the .js suffix, its
+# sysroot); this file finds it and adds what the lessons need:
+#   -fexceptions      a bad option is reported by a thrown OptionError; Emscripten's
+#                     default aborts at the first throw instead of catching it
+#   SINGLE_FILE       the .wasm module is kept inside the .js file: the default loader
+#                     fetches a separate .wasm by URL, which fails under Node.js 20 and
+#                     in a page opened from file://
+#   NODERAWFS         the program reads and writes the real file system through Node.js
+#                     (--out, the scene files, lessons/references), as a native
+#                     program does. A page in a browser will need its own link, with an
+#                     in-memory file system instead.
+#   ALLOW_MEMORY_GROWTH  a lesson takes the memory it needs, as a native program does
+#   EXIT_RUNTIME      main's return value becomes the exit status of `node`
+# No -pthread: the programs run single-threaded, and gi::parallel_for runs every task
+# on the calling thread (lib/gi/core/parallel.cpp).
+if(NOT GI_EMSCRIPTEN_PLATFORM_FILE)
+  find_program(GI_EM_CONFIG em-config)
+  if(GI_EM_CONFIG)
+    execute_process(COMMAND ${GI_EM_CONFIG} EMSCRIPTEN_ROOT OUTPUT_VARIABLE gi_emscripten_root
+                    OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+  endif()
+  find_file(GI_EMSCRIPTEN_PLATFORM_FILE Emscripten.cmake
+            PATHS ${gi_emscripten_root} $ENV{EMSDK}/upstream/emscripten /usr/share/emscripten /usr/lib/emscripten
+            PATH_SUFFIXES cmake/Modules/Platform NO_DEFAULT_PATH)
+  if(NOT GI_EMSCRIPTEN_PLATFORM_FILE)
+    message(FATAL_ERROR "Emscripten not found: install it with 'apt-get install emscripten' "
+                        "(elsewhere: emsdk, and its emsdk_env.sh sourced)")
+  endif()
+endif()
+include(${GI_EMSCRIPTEN_PLATFORM_FILE})
+
+set(CMAKE_CXX_FLAGS_INIT "-fexceptions")
+set(CMAKE_EXE_LINKER_FLAGS_INIT
+    "-fexceptions -sSINGLE_FILE=1 -sNODERAWFS=1 -sALLOW_MEMORY_GROWTH=1 -sEXIT_RUNTIME=1")
+# -O2, not the -O3 of a native Release build: at -O3 Emscripten's link also runs
+# Binaryen's slowest passes, for little speed in these programs.
+set(CMAKE_CXX_FLAGS_RELEASE "-O2 -DNDEBUG" CACHE STRING "Flags of a Release build (WebAssembly: -O2)")
+
+# The .js programs run under Node.js: ctest, the lessons target and the tests' own
+# runs of the lessons start them through it.
+find_program(GI_NODE node)
+if(NOT GI_NODE)
+  message(FATAL_ERROR "node not found: install it with 'apt-get install nodejs'")
+endif()
+set(CMAKE_CROSSCOMPILING_EMULATOR ${GI_NODE})
