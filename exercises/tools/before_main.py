@@ -24,7 +24,7 @@ INITIALISER = "_GLOBAL__sub_I_"
 # CPU feature probe (x86-64) and its choice of atomics (AArch64); AddressSanitizer's
 # set-up, which must precede everything, and its registration of each file's globals.
 RUNTIME = {"frame_dummy", "__cpu_indicator_init", "init_have_lse_atomics", "asan.module_ctor"}
-RUNTIME_FIRST = {"__asan_init"}
+RUNTIME_FIRST = {"__asan_init", "__lsan_init", "__ubsan_init_standalone_preinit"}  # the sanitizers' own set-up
 # Relocation types that fill a slot with the load address plus the addend (PIE).
 RELATIVE = {62: 8, 183: 1027}  # e_machine (x86-64, AArch64): R_*_RELATIVE
 
