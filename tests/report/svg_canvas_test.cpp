@@ -28,7 +28,11 @@ TEST(SvgCanvas, AnArrowEndsInAHeadAtItsPoint) {
 }
 
 TEST(SvgCanvas, NumbersHaveADotWhateverTheLocale) {
-  const char* locale = std::setlocale(LC_NUMERIC, "de_DE.UTF-8");
+  const char* locale = std::setlocale(LC_NUMERIC, "de_DE.UTF-8");  // a decimal comma, where installed
   EXPECT_EQ(gi::svg_number(0.5), "0.50");
+  EXPECT_EQ(gi::svg_number(-12.345), "-12.35");  // 1234.5 rounds away from zero
+  EXPECT_EQ(gi::svg_number(3.007), "3.01");
+  EXPECT_EQ(gi::svg_number(-0.001), "0.00");
+  EXPECT_EQ(gi::svg_number(720), "720.00");
   if (locale) std::setlocale(LC_NUMERIC, "C");
 }

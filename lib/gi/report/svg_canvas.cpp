@@ -1,7 +1,7 @@
 #include "gi/report/svg_canvas.hpp"
 
 #include <cmath>
-#include <cstdio>
+#include <cstdlib>
 
 namespace gi {
 
@@ -12,10 +12,11 @@ std::string svg_escape(const std::string& text) {
   return out;
 }
 
+// Two decimals, by integer arithmetic: printf would write the locale's decimal comma.
 std::string svg_number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.2f", v);
-  return buffer;
+  const long long hundredths = std::llround(v * 100), whole = std::llabs(hundredths) / 100;
+  const long long cents = std::llabs(hundredths) % 100;
+  return (hundredths < 0 ? "-" : "") + std::to_string(whole) + (cents < 10 ? ".0" : ".") + std::to_string(cents);
 }
 
 SvgCanvas::SvgCanvas(int width, int height) : width_(width), height_(height) {}

@@ -35,6 +35,6 @@ class SvgCanvas {
 };
 
 std::string svg_escape(const std::string& text);  // <, >, & and " as entities
-std::string svg_number(double v);                  // "%.2f", locale-independent
+std::string svg_number(double v);                  // two decimals, "-1.25", whatever the locale
 
 }  // namespace gi
