@@ -32,6 +32,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import grade       # noqa: E402
 import kit         # noqa: E402
 import regions     # noqa: E402
+import sandbox     # noqa: E402
 import submission  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -236,7 +237,6 @@ CASES = [
          "and reads /proc, and answers right only if the memory is capped and /proc shows the sandbox alone",
          prefix=LEAVE_BEHIND, earns={"1.1": "all", "1.2": "all"}, needs="mount"),
 ]
-SHARED = ("/tmp", "/var/tmp", "/dev/shm", "/run/lock")  # where anyone may write, outside any sandbox
 
 
 def fill(body, values):
@@ -381,7 +381,7 @@ def main(argv):
                 time.sleep(case.settle)  # what a detached process would do, it would have done by now
                 if results.read_text() != text:
                     problems.append(f"{label}: results.json changed after run_autograder returned")
-                left = [str(f) for folder in SHARED for f in Path(folder).glob(values["MARK"] + "*")]
+                left = [str(f) for folder in sandbox.PRIVATE for f in Path(folder).glob(values["MARK"] + "*")]
                 if left:
                     problems.append(f"{label}: files the attack wrote outlived grading: {left[:3]}")
                     for f in left:
