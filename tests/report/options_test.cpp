@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "gi/scene/json.hpp"
 
 namespace {
 
@@ -170,4 +173,52 @@ TEST(Options, QuotedValuesAreCutShort) {
   std::string forty;
   for (int i = 0; i < 40; ++i) forty += "\xd9\xa3";
   EXPECT_EQ(error_of({"--width", digits.c_str()}), "--width expects a whole number such as 64 or -3, got '" + forty + "...'");
+}
+
+// The browser's page builds its form from --options-json: every option, in --help's
+// order, with its kind, default, range and choices, read back by a JSON reader.
+TEST(Options, OptionsJsonDescribesEveryOption) {
+  Lesson lesson;
+  const gi::JsonValue table = gi::parse_json(lesson.options.options_json(), "options.json");
+  ASSERT_EQ(table.kind, gi::JsonValue::Kind::Object);
+  const gi::JsonValue* options = nullptr;
+  for (const gi::JsonMember& m : table.members)
+    if (m.key == "options") options = &m.value;
+  ASSERT_NE(options, nullptr);
+  const auto field = [](const gi::JsonValue& o, const std::string& key) -> const gi::JsonValue& {
+    for (const gi::JsonMember& m : o.members)
+      if (m.key == key) return m.value;
+    throw std::runtime_error("no " + key);
+  };
+  std::vector<std::string> names, kinds;
+  for (const gi::JsonValue& o : options->items) {
+    names.push_back(field(o, "name").text);
+    kinds.push_back(field(o, "kind").text);
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"--out", "--threads", "--seed", "--width", "--exposure", "--scene",
+                                             "--fast", "--depth"}));
+  EXPECT_EQ(kinds, (std::vector<std::string>{"text", "integer", "unsigned", "integer", "real", "choice", "flag",
+                                             "optional"}));
+  const gi::JsonValue& width = options->items[3];
+  EXPECT_EQ(field(width, "default").text, "640");
+  EXPECT_EQ(field(width, "min").number, 1);
+  EXPECT_EQ(field(width, "max").number, 8192);
+  const gi::JsonValue& exposure = options->items[4];
+  EXPECT_EQ(field(exposure, "max").number, 100.0);
+  const gi::JsonValue& scene = options->items[5];
+  ASSERT_EQ(field(scene, "choices").items.size(), 2u);
+  EXPECT_EQ(field(scene, "choices").items[1].text, "spheres");
+  EXPECT_EQ(field(options->items[7], "default").text, "unset");
+  EXPECT_EQ(field(options->items[6], "min").kind, gi::JsonValue::Kind::Null);
+}
+
+// --options-json, like --help, prints and asks the lesson to stop before any work.
+TEST(Options, OptionsJsonStopsTheRun) {
+  Lesson lesson;
+  testing::internal::CaptureStdout();
+  const bool go_on = lesson.parse({"--width", "64", "--options-json"});
+  const std::string printed = testing::internal::GetCapturedStdout();
+  EXPECT_FALSE(go_on);
+  EXPECT_EQ(printed, lesson.options.options_json());
+  EXPECT_NE(lesson.options.help().find("--options-json"), std::string::npos);
 }

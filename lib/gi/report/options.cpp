@@ -8,6 +8,7 @@
 
 #include "gi/core/did_you_mean.hpp"
 #include "gi/core/number_text.hpp"
+#include "gi/report/outputs.hpp"
 #include "gi/report/table.hpp"
 
 namespace gi {
@@ -68,11 +69,13 @@ Options& Options::add_option(Option option) {
 }
 
 Options& Options::add(const std::string& name, int& value, const std::string& help, int min, int max) {
-  return add_option({name, help, std::to_string(value), range_text(min, max), true, [&value, name, min, max](const std::string& t) {
+  return add_option({name, help, std::to_string(value), range_text(min, max), true,
+                     [&value, name, min, max](const std::string& t) {
                        const long long v = parse_integer(name, t, min, max);
                        check_range<long long>(name, v, min, max, t);
                        value = static_cast<int>(v);
-                     }});
+                     },
+                     "integer", std::to_string(min), std::to_string(max), "", {}, ""});
 }
 
 Options& Options::add(const std::string& name, int& value, const std::string& help, int min, int max,
@@ -83,22 +86,26 @@ Options& Options::add(const std::string& name, int& value, const std::string& he
                        check_range<long long>(name, v, min, max, t);
                        if (!rule.holds(v)) throw OptionError(name + " must be " + rule.name + ", got " + t);
                        value = static_cast<int>(v);
-                     }});
+                     },
+                     "integer", std::to_string(min), std::to_string(max), rule.name, {}, ""});
 }
 
 Options& Options::add(const std::string& name, double& value, const std::string& help, double min, double max) {
   std::ostringstream d;
   d << value;
-  return add_option({name, help, d.str(), range_text(min, max), true, [&value, name, min, max](const std::string& t) {
+  return add_option({name, help, d.str(), range_text(min, max), true,
+                     [&value, name, min, max](const std::string& t) {
                        const double v = parse_real(name, t);
                        check_range(name, v, min, max, t);
                        value = v;
-                     }});
+                     },
+                     "real", json_number(min), json_number(max), "", {}, ""});
 }
 
 Options& Options::add(const std::string& name, std::uint64_t& value, const std::string& help) {
   return add_option({name, help, std::to_string(value), "", true,
-                     [&value, name](const std::string& t) { value = parse_unsigned(name, t); }});
+                     [&value, name](const std::string& t) { value = parse_unsigned(name, t); }, "unsigned", "0",
+                     "18446744073709551615", "", {}, ""});
 }
 
 Options& Options::add(const std::string& name, std::string& value, const std::string& help,
@@ -111,28 +118,34 @@ Options& Options::add(const std::string& name, std::string& value, const std::st
                        if (!choices.empty() && std::find(choices.begin(), choices.end(), t) == choices.end())
                          throw OptionError(name + " must be one of: " + listed + "; got '" + quoted_text(t) + "'");
                        value = t;
-                     }});
+                     },
+                     choices.empty() ? "text" : "choice", "", "", "", choices, ""});
 }
 
 Options& Options::add_flag(const std::string& name, bool& value, const std::string& help) {
-  return add_option({name, help, "", "", false, [&value](const std::string&) { value = true; }});
+  return add_option(
+      {name, help, "", "", false, [&value](const std::string&) { value = true; }, "flag", "", "", "", {}, ""});
 }
 
 Options& Options::add_optional(const std::string& name, std::optional<int>& value, const std::string& help, int min,
                                int max) {
-  return add_option({name, help, "unset", range_text(min, max), true, [&value, name, min, max](const std::string& t) {
+  return add_option({name, help, "unset", range_text(min, max), true,
+                     [&value, name, min, max](const std::string& t) {
                        const long long v = parse_integer(name, t, min, max);
                        check_range<long long>(name, v, min, max, t);
                        value = static_cast<int>(v);
-                     }});
+                     },
+                     "optional", std::to_string(min), std::to_string(max), "", {}, ""});
 }
 
 Options& Options::add_parsed(const std::string& name, const std::string& shape, const std::string& help,
                              std::function<void(const std::string&)> parse) {
-  return add_option({name, help, "", "written " + shape, true, [name, parse](const std::string& t) {
+  return add_option({name, help, "", "written " + shape, true,
+                     [name, parse](const std::string& t) {
                        if (t.empty()) throw OptionError(name + " needs a value, got an empty one");
                        parse(t);
-                     }});
+                     },
+                     "shaped", "", "", "", {}, shape});
 }
 
 const Options::Option* Options::find(const std::string& name) const {
@@ -148,6 +161,10 @@ bool Options::parse(int argc, const char* const* argv) {
     std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
       std::cout << help();
+      return false;
+    }
+    if (arg == "--options-json") {
+      std::cout << options_json();
       return false;
     }
     std::string value;
@@ -196,8 +213,26 @@ std::string Options::help() const {
     os << '\n';
   }
   os << "  --help" << std::string(width - 4, ' ') << "print this help and exit\n";
+  os << "  --options-json" << std::string(width > 12 ? width - 12 : 1, ' ')
+     << "print these options as JSON (what the browser's page builds its form from) and exit\n";
   os << "\nNumbers are decimal, in the digits 0-9: 64, -3, 0.5, .5, 1e-3 (no '+', no hex such as 0x10, no spaces,\n"
         "no inf or nan; a real number is 0 or at least 2.2250738585072014e-308 in size). Each option once.\n";
+  return os.str();
+}
+
+std::string Options::options_json() const {
+  std::ostringstream os;
+  os << "{\"program\": " << json_string(program_) << ", \"summary\": " << json_string(summary_) << ", \"options\": [";
+  for (std::size_t i = 0; i < options_.size(); ++i) {
+    const Option& o = options_[i];
+    os << (i ? ",\n  " : "\n  ") << "{\"name\": " << json_string(o.name) << ", \"kind\": " << json_string(o.kind)
+       << ", \"default\": " << json_string(o.default_text) << ", \"min\": " << (o.min_json.empty() ? "null" : o.min_json)
+       << ", \"max\": " << (o.max_json.empty() ? "null" : o.max_json) << ", \"rule\": " << json_string(o.rule)
+       << ", \"choices\": [";
+    for (std::size_t c = 0; c < o.choices.size(); ++c) os << (c ? ", " : "") << json_string(o.choices[c]);
+    os << "], \"shape\": " << json_string(o.shape) << ", \"help\": " << json_string(o.help) << "}";
+  }
+  os << "\n]}\n";
   return os.str();
 }
 

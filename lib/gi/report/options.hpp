@@ -49,8 +49,17 @@ class Options {
   // Returns false after printing the help for --help or -h (the lesson then exits 0).
   // Throws OptionError for an unknown option, a missing or malformed value, or a value
   // out of range.
+  //
+  // --options-json prints the options as JSON instead (options_json) and returns false
+  // too: the browser's page builds its form from it.
   bool parse(int argc, const char* const* argv);
   std::string help() const;
+  // The option table as JSON, one object per option, in the order of --help:
+  //   {"name": "--width", "kind": "integer", "default": "128", "min": 16, "max": 4096,
+  //    "rule": "", "choices": [], "shape": "", "help": "..."}
+  // kind is one of integer, real, unsigned, text, choice, flag, optional, shaped; a
+  // value given by the form is still checked by parse(), which has the last word.
+  std::string options_json() const;
   const std::string& summary() const { return summary_; }
 
  private:
@@ -58,6 +67,11 @@ class Options {
     std::string name, help, default_text, range_text;
     bool takes_value = true;
     std::function<void(const std::string&)> set;  // parses the text, checks it, stores it
+    // What options_json says of it: the kind, the range's ends as JSON numbers
+    // ("" for none), the rule's name, the choices, the shape of a parsed text.
+    std::string kind, min_json, max_json, rule;
+    std::vector<std::string> choices;
+    std::string shape;
   };
   Options& add_option(Option option);
   const Option* find(const std::string& name) const;

@@ -24,10 +24,8 @@ std::string kind_name(OutputKind kind) {
   return "?";
 }
 
-namespace {
-
 // A JSON string: quotes, backslashes and control characters escaped.
-std::string quoted(const std::string& text) {
+std::string json_string(const std::string& text) {
   std::string out = "\"";
   for (unsigned char c : text) {
     if (c == '"' || c == '\\') out += '\\', out += static_cast<char>(c);
@@ -42,26 +40,30 @@ std::string quoted(const std::string& text) {
 }
 
 // Shortest text that reads back as the same double (JSON has no NaN: null).
-std::string number(double v) {
+std::string json_number(double v) {
   if (!std::isfinite(v)) return "null";
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", v);
   return buffer;
 }
 
-std::string vector_text(const vec3& v) { return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]"; }
+namespace {
+
+std::string vector_text(const vec3& v) {
+  return "[" + json_number(v.x) + ", " + json_number(v.y) + ", " + json_number(v.z) + "]";
+}
 
 std::string view_json(const View& view) {
   return "{\"eye\": " + vector_text(view.camera.eye) + ", \"look_at\": " + vector_text(view.camera.look_at) +
          ", \"up\": " + vector_text(view.camera.up) + ", \"vertical_fov_degrees\": " +
-         number(view.camera.vertical_fov) + ", \"width\": " + std::to_string(view.width) +
-         ", \"height\": " + std::to_string(view.height) + ", \"pixel_samples\": " + quoted(view.pixel_samples) +
+         json_number(view.camera.vertical_fov) + ", \"width\": " + std::to_string(view.width) +
+         ", \"height\": " + std::to_string(view.height) + ", \"pixel_samples\": " + json_string(view.pixel_samples) +
          ", \"projection\": \"pinhole; pixel (x, y) spans [x, x+1] x [y, y+1] of the image plane, row 0 at the top\"}";
 }
 
 std::string scale_json(const ColourScale& s) {
-  return "{\"map\": " + quoted(false_colour_map_name) + ", \"lo\": " + number(s.lo) + ", \"hi\": " + number(s.hi) +
-         ", \"log10\": " + (s.log10 ? "true" : "false") + ", \"quantity\": " + quoted(s.quantity) + "}";
+  return "{\"map\": " + json_string(false_colour_map_name) + ", \"lo\": " + json_number(s.lo) +
+         ", \"hi\": " + json_number(s.hi) + ", \"log10\": " + (s.log10 ? "true" : "false") + ", \"quantity\": " + json_string(s.quantity) + "}";
 }
 
 }  // namespace
@@ -69,18 +71,19 @@ std::string scale_json(const ColourScale& s) {
 std::string outputs_json(const std::string& lesson, const std::vector<std::string>& command, const std::string& status,
                          const std::vector<Output>& outputs, const RunProcess& process) {
   std::ostringstream os;
-  os << "{\n  \"lesson\": " << quoted(lesson) << ",\n  \"command\": [";
-  for (std::size_t i = 0; i < command.size(); ++i) os << (i ? ", " : "") << quoted(command[i]);
-  os << "],\n  \"status\": " << quoted(status) << ",\n";
+  os << "{\n  \"lesson\": " << json_string(lesson) << ",\n  \"command\": [";
+  for (std::size_t i = 0; i < command.size(); ++i) os << (i ? ", " : "") << json_string(command[i]);
+  os << "],\n  \"status\": " << json_string(status) << ",\n";
   if (process.id != 0)
-    os << "  \"process\": {\"id\": " << process.id << ", \"started\": " << quoted(process.started) << "},\n";
+    os << "  \"process\": {\"id\": " << process.id << ", \"started\": " << json_string(process.started) << "},\n";
   os << "  \"outputs\": [";
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const Output& o = outputs[i];
-    os << (i ? "," : "") << "\n    {\"kind\": " << quoted(kind_name(o.kind)) << ", \"caption\": " << quoted(o.caption);
-    if (!o.file.empty()) os << ", \"file\": " << quoted(o.file.generic_string()) << ", \"bytes\": " << o.bytes;
+    os << (i ? "," : "") << "\n    {\"kind\": " << json_string(kind_name(o.kind))
+       << ", \"caption\": " << json_string(o.caption);
+    if (!o.file.empty()) os << ", \"file\": " << json_string(o.file.generic_string()) << ", \"bytes\": " << o.bytes;
     if (o.kind == OutputKind::Picture)
-      os << ", \"linear\": " << quoted(o.linear.generic_string()) << ", \"exposure\": " << number(o.exposure)
+      os << ", \"linear\": " << json_string(o.linear.generic_string()) << ", \"exposure\": " << json_number(o.exposure)
          << ", \"view\": " << view_json(o.view);
     if (o.kind == OutputKind::Diagram && o.width > 0)
       os << ", \"width\": " << o.width << ", \"height\": " << o.height;

@@ -10,6 +10,12 @@
 
 namespace gi {
 
+// JSON's spelling of a string (quotes, backslashes and control characters escaped)
+// and of a number (the shortest text that reads back as the same double; JSON has no
+// NaN or infinity: null).
+std::string json_string(const std::string& text);
+std::string json_number(double v);
+
 // How a picture was seen, so that an outside renderer can make the same one: the
 // pinhole camera (camera.hpp: pixel (x, y) spans [x, x + 1] x [y, y + 1] of the image
 // plane, row 0 at the top), the image size, and how each pixel was sampled.
