@@ -1,5 +1,6 @@
 // Lesson 05, steps 2 and 3: the BVH on a room of quads (studies.hpp).
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -95,13 +96,16 @@ void changes_table(int quads, int rays_per_kind, gi::Lesson& lesson) {
                   {{"tree and walk"}, {"build ms", 1}, {"camera Mrays/s", 2}, {"x", 2}, {"random Mrays/s", 2}, {"x", 2},
                    {"random 4 m any hit Mrays/s", 2}, {"x", 2}});
   const std::size_t base = 2;  // the lab's default tree and walk
+  // A cast shorter than the clock's tick measures 0 s (a browser's clock ticks every
+  // 0.1 ms): its rate and ratio are not known, "-", rather than infinite.
+  const auto known = [](double v) { return std::isfinite(v) && v > 0 ? gi::Cell(v) : gi::Cell("-"); };
   for (std::size_t i = 0; i < changes.size(); ++i) {
     std::vector<gi::Cell> row{changes[i].label, build_ms[i]};
     const std::size_t counts[] = {camera.size(), random.size(), shadow.size()};
     for (int q = 0; q < 3; ++q) {
-      const double t = gi::median(times[i][q]);
-      row.push_back(1e-6 * counts[q] / t);
-      row.push_back(gi::median(times[base][q]) / t);
+      const double t = gi::median(times[i][q]), t_base = gi::median(times[base][q]);
+      row.push_back(t > 0 ? known(1e-6 * counts[q] / t) : gi::Cell("-"));
+      row.push_back(t > 0 ? known(t_base / t) : gi::Cell("-"));
     }
     table.add_row(row);
   }
