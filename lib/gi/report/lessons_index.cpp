@@ -106,6 +106,9 @@ std::string lessons_index_page(const fs::path& folder) {
      << "), and its chapter and lab.</p>\n";
   if (fs::is_regular_file(folder / "book" / "index.html", error))
     os << "<p class=\"links\"><a class=\"book\" href=\"book/index.html\">The course book: every chapter</a></p>\n";
+  // The WebAssembly build's live pages (docs/live/make_live.py), where they are made.
+  if (fs::is_regular_file(folder / "live" / "index.html", error))
+    os << "<p class=\"links\"><a class=\"live\" href=\"live/index.html\">Every lesson live in the browser</a></p>\n";
   if (rows.empty()) os << "<p>No lesson has run here yet.</p>\n";
   else
     os << "<div class=\"table\"><table class=\"contents\">\n<thead><tr><th>lesson</th><th>what it shows</th>"

@@ -268,6 +268,10 @@ void header_html(std::ostream& os, const RunSummary& run, const std::vector<Outp
     if (o.kind == OutputKind::Viewer)
       os << " <a class=\"viewer-link\" href=\"" << html_escape(url_path(o.file.generic_string()))
          << "\">Open the interactive viewer</a>";
+  // The live page, where the WebAssembly build has made one (docs/live/make_live.py).
+  std::error_code error;
+  if (std::filesystem::is_regular_file(run.folder / "live.html", error))
+    os << " <a class=\"live-link\" href=\"live.html\">Run it in the browser</a>";
   const bool complete = run.status == "complete";
   os << "</p>\n<p class=\"status " << (complete ? "complete" : "failed") << "\">" << html_escape(run.status) << "</p>\n"
      << "<p class=\"command\"><code>" << html_escape(shell_command(run.command)) << "</code></p>\n";
