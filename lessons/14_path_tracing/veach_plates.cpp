@@ -46,17 +46,33 @@ void veach_plates(const PlatesSettings& s, gi::Lesson& lesson) {
   const std::uint64_t reference_seed = s.seed + 1000000;  // streams no picture measured uses
   const Rendered reference = render(scene, width, height, gi::Strategy::Mis, s.reference_spp, reference_seed, s.threads);
 
-  gi::Table table("Veach's plates, " + std::to_string(width) + "x" + std::to_string(height) +
-                      ": each strategy against MIS at " + std::to_string(s.reference_spp) + " spp",
-                  {{"strategy"}, {"spp"}, {"time (s)", 3}, {"rel. RMS", 3, gi::Format::Fixed}});
-  // Scored on the plates: the lights seen directly are the same in every strategy.
+  // Scored on the plates (the lights seen directly are the same in every strategy), and
+  // on the figure's two corners: the sharpest plate's smallest light and the roughest
+  // plate's largest (highlight_mask).
   const double epsilon = scene.scene().background.x;  // the sky's radiance (grey)
   const std::vector<char> on_plates = gi::plates_mask(scene, width, height);
+  const std::vector<char> sharp_small = gi::highlight_mask(scene, width, height, 0, 0);
+  const std::vector<char> rough_large =
+      gi::highlight_mask(scene, width, height, gi::plate_count - 1, gi::plate_light_count - 1);
+  const auto score = [&](const std::vector<double>& errors, const std::vector<char>& mask) {
+    return std::find(mask.begin(), mask.end(), 1) == mask.end() ? gi::Cell("-") : gi::Cell(gi::rms_over(errors, mask));
+  };
+  gi::Table table("Veach's plates, " + std::to_string(width) + "x" + std::to_string(height) +
+                      ": relative RMS error against MIS at " + std::to_string(s.reference_spp) +
+                      " spp, over the plates and where the sharpest plate shows the smallest light and "
+                      "the roughest the largest",
+                  {{"strategy"},
+                   {"spp"},
+                   {"time (s)", 3},
+                   {"rel. RMS", 3, gi::Format::Fixed},
+                   {"sharp, small", 3, gi::Format::Fixed},
+                   {"rough, large", 3, gi::Format::Fixed}});
   std::vector<gi::Image> pictures, maps;
   for (const gi::Strategy strategy : {gi::Strategy::Bsdf, gi::Strategy::Lights, gi::Strategy::Mis}) {
     const Rendered r = render(scene, width, height, strategy, s.spp, s.seed, s.threads);
     const std::vector<double> errors = gi::relative_error_map(r.picture, reference.picture, epsilon);
-    table.add_row({gi::name(strategy), s.spp, r.seconds, gi::rms_over(errors, on_plates)});
+    table.add_row({gi::name(strategy), s.spp, r.seconds, gi::rms_over(errors, on_plates), score(errors, sharp_small),
+                   score(errors, rough_large)});
     pictures.push_back(r.picture);
     std::vector<double> shown = errors;  // the map shows what is scored: the plates
     for (std::size_t i = 0; i < shown.size(); ++i)
