@@ -81,6 +81,9 @@ void veach_plates(const PlatesSettings& s, gi::Lesson& lesson) {
   }
   std::cout << '\n';
   lesson.table(table, "plates");
+  lesson.say("images: " + lesson.out().string() +
+             "/ (plates.png: bsdf, lights, mis and the reference; plates_error.png: each pixel's error, black 0 to "
+             "red 1)");
   pictures.push_back(reference.picture);
   lesson.diagram(gi::side_by_side(pictures), "plates",
                  "Veach's plates: BSDF sampling, light sampling, MIS at " + std::to_string(s.spp) +
