@@ -2,9 +2,11 @@
 // Monte Carlo itself (a 1-D integral, then the hemisphere, uniform against cosine
 // sampling); then the Cornell box at 1, 4, 16, ... samples per pixel against a converged
 // reference, with each picture's own variance; then BSDF sampling alone, light sampling
-// alone and both with MIS, error against time.
+// alone and both with MIS, error against time; last, Veach's glossy plates, where each
+// strategy alone fails somewhere and MIS does not.
 // The steps are below; converge.cpp runs one strategy on one film, reference.cpp makes
-// what each picture is measured against, and monte_carlo.cpp is step 1.
+// what each picture is measured against, monte_carlo.cpp is step 1 and veach_plates.cpp
+// step 5.
 #include <cmath>
 #include <iostream>
 #include <optional>
