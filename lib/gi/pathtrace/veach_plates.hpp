@@ -30,11 +30,11 @@ Scene veach_plates_scene();
 // is the same in all three, up to where in the pixel its rays fall).
 std::vector<char> plates_mask(const PathScene& scene, int width, int height);
 
-// The pixels of a width x height picture (row-major, 1 = in) whose eye ray through the
-// pixel's centre meets `plate` first and whose mirror direction there points within
-// the light's angular radius plus the lobe's half-width (where cos^n falls to 1/10) of
-// `light`'s centre, at any of 4 x 4 points of the pixel: where that plate shows that
-// light's highlight, however small (the sharpest plate's are smaller than a pixel).
+// The pixels of a width x height picture (row-major, 1 = in) where the eye ray through
+// any of 4 x 4 points of the pixel meets `plate` first, and its mirror direction there
+// points within the light's angular radius plus the lobe's half-width (where cos^n falls
+// to 1/10) of `light`'s centre: where that plate shows that light's highlight, however
+// small (the sharpest plate's are smaller than a pixel).
 std::vector<char> highlight_mask(const PathScene& scene, int width, int height, int plate, int light);
 
 // Each pixel's error in proportion to the light there, in grey (the mean of the channels):
