@@ -2,9 +2,11 @@
 // Monte Carlo itself (a 1-D integral, then the hemisphere, uniform against cosine
 // sampling); then the Cornell box at 1, 4, 16, ... samples per pixel against a converged
 // reference, with each picture's own variance; then BSDF sampling alone, light sampling
-// alone and both with MIS, error against time.
+// alone and both with MIS, error against time; last, Veach's glossy plates, where each
+// strategy alone fails somewhere and MIS does not.
 // The steps are below; converge.cpp runs one strategy on one film, reference.cpp makes
-// what each picture is measured against, and monte_carlo.cpp is step 1.
+// what each picture is measured against, monte_carlo.cpp is step 1 and veach_plates.cpp
+// step 5.
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -20,6 +22,7 @@
 #include "gi/report/table.hpp"
 #include "monte_carlo.hpp"
 #include "reference.hpp"
+#include "veach_plates.hpp"
 
 namespace {
 
@@ -156,6 +159,7 @@ int main(int argc, char** argv) {
                                        "4096 samples per pixel against a converged reference, and BSDF "
                                        "sampling, light sampling and MIS, error against time.");
   Settings s;
+  lesson14::PlatesSettings plates;
   s.reference = std::string(GI_SOURCE_DIR) + "/lessons/references/cornell_256x256";
   lesson.add_image_size(s.width, s.height);
   lesson.options()
@@ -164,7 +168,8 @@ int main(int argc, char** argv) {
       .add("--max-depth", s.path.max_depth, "bounces per path", 0, 10000)
       .add("--reference", s.reference, "the Cornell box's converged picture (files STEM.txt, STEM.pfm, ...)")
       .add("--reference-spp", s.reference_spp, "samples per pixel of a reference this lesson renders itself", 16,
-           1 << 20);
+           1 << 20)
+      .add("--plates-spp", plates.spp, "samples per pixel of each strategy on Veach's plates (step 5)", 1, 1 << 12);
   std::optional<gi::PathScene> scene;
   std::optional<gi::Truth> reference;
   lesson.add_check([&] {  // before any work: a missing, damaged or stale reference is said at once
@@ -179,5 +184,7 @@ int main(int argc, char** argv) {
     const std::vector<std::vector<Snapshot>> runs = pictures(*scene, s, reference, lesson);
     strategies(s, runs, lesson);
     speed(s, runs.back(), lesson);
+    plates.width = s.width, plates.threads = s.threads, plates.seed = s.seed;
+    lesson14::veach_plates(plates, lesson);  // 5. veach_plates.cpp
   });
 }

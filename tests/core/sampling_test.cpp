@@ -17,10 +17,10 @@ namespace t = gi::testing;
 
 namespace {
 
-// Six chi-square tests below; each passes at the Sidak level that keeps the chance of
+// Seven chi-square tests below; each passes at the Sidak level that keeps the chance of
 // any false failure in this file at 1% (for a correct sampler and a random seed; the
 // seeds here are fixed, so the outcome is too).
-constexpr int chi_square_tests = 6;
+constexpr int chi_square_tests = 7;
 const double significance = t::sidak_significance(0.01, chi_square_tests);
 constexpr int samples = 200000;
 
@@ -106,6 +106,25 @@ TEST(Sampling, UniformCone) {
   const auto pdf = [&](const vec3& d) { return d.z >= cos_max ? gi::uniform_cone_pdf(cos_max) : 0.0; };
   EXPECT_GT(directions_test(w, pdf).p_value, significance);
   EXPECT_NEAR(t::integral_over_sphere(pdf), 1.0, 2e-3);
+}
+
+TEST(Sampling, PhongLobe) {
+  // n = 10: a lobe wide enough for the 10 x 20 cells to resolve (half its density
+  // within 21 degrees of +z).
+  const double n = 10;
+  std::vector<vec3> w;
+  for (vec2 u : uniforms(7)) {
+    w.push_back(gi::sample_phong_lobe(u, n));
+    expect_unit(w.back());
+    ASSERT_GE(w.back().z, 0.0);
+    if (w.size() < 1000) expect_round_trip(u, gi::invert_phong_lobe_sample(w.back(), n));
+  }
+  const auto pdf = [&](const vec3& d) { return gi::phong_lobe_pdf(d.z, n); };
+  const t::ChiSquare c = directions_test(w, pdf);
+  EXPECT_GT(c.p_value, significance) << "chi-square " << c.statistic << " with " << c.degrees_of_freedom << " dof";
+  EXPECT_NEAR(t::integral_over_sphere(pdf), 1.0, 2e-3);
+  EXPECT_EQ(gi::phong_lobe_pdf(-0.3, n), 0.0);
+  EXPECT_DOUBLE_EQ(gi::phong_lobe_pdf(1.0, n), (n + 1) / (2 * gi::pi));
 }
 
 TEST(Sampling, UniformTriangle) {

@@ -335,12 +335,13 @@ TEST(Lessons, PathTracingWritesPicturesTablesAndChartTheSameForAnyThreadCount) {
   }
   for (const char* file : {"cornell_1spp.png", "cornell_1spp.pfm", "cornell_4spp.pfm", "relative_error_8spp.png",
                            "progression.png", "reference.pfm", "monte_carlo.csv", "pictures.csv", "strategies.csv",
-                           "error_vs_time.svg", "outputs.json"})
+                           "error_vs_time.svg", "plates.png", "plates_error.png", "plates.csv", "outputs.json"})
     EXPECT_TRUE(fs::exists(out_dir("14_threads1") + "/" + file)) << file;
   check_pictures(out_dir("14_threads1"), 3);
   const std::string one = bytes(out_dir("14_threads1") + "/cornell_4spp.pfm");
   ASSERT_FALSE(one.empty());
   EXPECT_EQ(bytes(out_dir("14_threads3") + "/cornell_4spp.pfm"), one);
+  EXPECT_EQ(bytes(out_dir("14_threads3") + "/plates.png"), bytes(out_dir("14_threads1") + "/plates.png"));
   // Another scene renders its own reference and keeps it for the next run.
   const std::string soft = "--scene soft --width 24 --height 16 --max-spp 2 --reference-spp 16 --out " +
                            out_dir("14_soft");

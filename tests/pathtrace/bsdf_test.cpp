@@ -146,3 +146,45 @@ TEST(Bsdf, MaterialsBecomeTheRightKind) {
   EXPECT_EQ(gi::bsdf_at(checker, vec3(0.5, 0, 0.5)).albedo, gi::Color(0.1));
   EXPECT_EQ(gi::bsdf_at(checker, vec3(1.5, 0, 0.5)).albedo, gi::Color(0.9));
 }
+
+TEST(Bsdf, GlossySamplesCarryFCosOverPAndStayAboveTheSurface) {
+  // The Phong lobe: each sample's weight is f |cos| / p of its own direction, and its pdf
+  // the density bsdf_pdf gives; samples below the surface are refused, not kept.
+  const gi::Bsdf glossy{gi::BsdfKind::Glossy, gi::Color(0.8), 1.0, 50};
+  const vec3 wo = direction(1.2, 0.4, n);  // 69 degrees: part of the lobe dips below
+  gi::Rng rng(3);
+  int refused = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const auto s = gi::sample_bsdf(glossy, n, wo, vec2(rng.uniform(), rng.uniform()), rng.uniform());
+    if (!s) {
+      ++refused;
+      continue;
+    }
+    ASSERT_FALSE(s->specular);
+    ASSERT_GT(gi::dot(s->wi, n), 0);
+    ASSERT_NEAR(s->pdf, gi::bsdf_pdf(glossy, n, wo, s->wi), 1e-9 * s->pdf);
+    const gi::Color f = gi::bsdf_f(glossy, n, wo, s->wi);
+    ASSERT_NEAR(s->weight.x, f.x * gi::dot(n, s->wi) / s->pdf, 1e-9);
+  }
+  EXPECT_GT(refused, 0) << "a grazing wo's lobe reaches below the surface";
+}
+
+TEST(Bsdf, GlossyDensityIntegratesToAtMostOneAndIsReciprocal) {
+  const gi::Bsdf glossy{gi::BsdfKind::Glossy, gi::Color(0.8), 1.0, 10};
+  const vec3 wo = direction(0.3, 2.0, n), a = direction(0.5, 1.0, n);
+  // Near the normal the lobe (width ~20 degrees) stays above the surface: all of it counts.
+  EXPECT_NEAR(t::integral_over_sphere([&](const vec3& wi) { return gi::bsdf_pdf(glossy, n, wo, wi); }), 1.0, 2e-2);
+  // No more leaves than arrives: int f |cos| dw_i <= k_s.
+  EXPECT_LT(t::integral_over_sphere(
+                [&](const vec3& wi) { return gi::bsdf_f(glossy, n, wo, wi).x * std::abs(gi::dot(n, wi)); }),
+            0.8);
+  EXPECT_NEAR(gi::bsdf_f(glossy, n, wo, a).x, gi::bsdf_f(glossy, n, a, wo).x, 1e-12);
+  gi::Material plate;
+  plate.diffuse = gi::Color(0.0);
+  plate.specular = gi::Color(0.8);
+  plate.shininess = 10;
+  EXPECT_EQ(gi::bsdf_at(plate, vec3(0)).kind, gi::BsdfKind::Glossy) << "nothing but a Phong highlight";
+  EXPECT_EQ(gi::bsdf_at(plate, vec3(0)).exponent, 10);
+  plate.diffuse = gi::Color(0.1);
+  EXPECT_EQ(gi::bsdf_at(plate, vec3(0)).kind, gi::BsdfKind::Lambertian) << "a highlight beside a diffuse part is dropped";
+}

@@ -76,6 +76,22 @@ inline vec2 invert_uniform_cone_sample(const vec3& w, double cos_max) {
   return {(1 - w.z) / (1 - cos_max), (phi < 0 ? phi + 2 * pi : phi) / (2 * pi)};
 }
 
+// A Phong lobe of exponent n around +z: density proportional to cos^n(alpha), alpha the
+// angle from +z. Its cumulative in z = cos(alpha) is z^(n + 1), so z = u.x^(1 / (n + 1)),
+// phi = 2 pi u.y. Large n squeezes the lobe towards +z (a sharp reflection).
+inline vec3 sample_phong_lobe(vec2 u, double n) {
+  const double z = std::pow(u.x, 1 / (n + 1)), r = std::sqrt(std::max(0.0, 1 - z * z)), phi = 2 * pi * u.y;
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+// Solid angle: p(w) = (n + 1) / (2 pi) cos^n(alpha) for cos(alpha) = w.z > 0, else 0.
+inline double phong_lobe_pdf(double cos_alpha, double n) {
+  return cos_alpha > 0 ? (n + 1) / (2 * pi) * std::pow(cos_alpha, n) : 0.0;
+}
+inline vec2 invert_phong_lobe_sample(const vec3& w, double n) {
+  const double phi = std::atan2(w.y, w.x);
+  return {std::pow(w.z, n + 1), (phi < 0 ? phi + 2 * pi : phi) / (2 * pi)};
+}
+
 // Uniform over a triangle, as barycentric coordinates (b0, b1, b2) of its corners:
 // b0 = 1 - sqrt(u.x), b1 = u.y sqrt(u.x). The square root undoes the triangle's
 // narrowing towards corner 0, so equal areas get equal shares.

@@ -31,21 +31,35 @@ std::optional<BsdfSample> sample_dielectric(const Bsdf& bsdf, const vec3& n, con
   return BsdfSample{normalize(*transmitted), squeeze * bsdf.albedo, 1.0 - fresnel, true};
 }
 
+// The mirror direction of wo about the normal on wo's side: the axis of the Phong lobe.
+vec3 lobe_axis(const vec3& n, const vec3& wo) { return reflect(-wo, dot(wo, n) > 0 ? n : -n); }
+
 }  // namespace
+
+bool is_glossy(const Material& material) {
+  return max_component(material.diffuse) <= 0 && material.checker_size <= 0 && max_component(material.specular) > 0;
+}
 
 Bsdf bsdf_at(const Material& material, const vec3& point) {
   if (material.is_dielectric()) return {BsdfKind::Dielectric, material.transmission, material.ior};
   if (max_component(material.mirror) > 0) return {BsdfKind::Mirror, material.mirror, 1.0};
+  if (is_glossy(material)) return {BsdfKind::Glossy, material.specular, 1.0, material.shininess};
   return {BsdfKind::Lambertian, diffuse_at(material, point), 1.0};
 }
 
 Color bsdf_f(const Bsdf& bsdf, const vec3& n, const vec3& wo, const vec3& wi) {
-  if (bsdf.kind != BsdfKind::Lambertian || !same_side(n, wo, wi)) return Color(0.0);
+  if (is_specular(bsdf) || !same_side(n, wo, wi)) return Color(0.0);
+  if (bsdf.kind == BsdfKind::Glossy) {  // f = k_s (n + 2) / (2 pi) cos^n(alpha)
+    const double cos_alpha = dot(wi, lobe_axis(n, wo));
+    if (!(cos_alpha > 0)) return Color(0.0);
+    return bsdf.albedo * ((bsdf.exponent + 2) / (2 * pi) * std::pow(cos_alpha, bsdf.exponent));
+  }
   return bsdf.albedo * inv_pi;  // f = rho / pi
 }
 
 double bsdf_pdf(const Bsdf& bsdf, const vec3& n, const vec3& wo, const vec3& wi) {
-  if (bsdf.kind != BsdfKind::Lambertian || !same_side(n, wo, wi)) return 0.0;
+  if (is_specular(bsdf) || !same_side(n, wo, wi)) return 0.0;
+  if (bsdf.kind == BsdfKind::Glossy) return phong_lobe_pdf(dot(wi, lobe_axis(n, wo)), bsdf.exponent);
   return cosine_hemisphere_pdf(std::abs(dot(n, wi)));
 }
 
@@ -66,6 +80,16 @@ std::optional<BsdfSample> sample_bsdf(const Bsdf& bsdf, const vec3& n, const vec
       return BsdfSample{reflect(-wo, n_wo), bsdf.albedo, 1.0, true};
     }
     case BsdfKind::Dielectric: return sample_dielectric(bsdf, n, wo, u_choice);
+    case BsdfKind::Glossy: {
+      // Around the mirror direction by the lobe. A direction below the surface carries
+      // nothing (f = 0 there); the lobe's density still counts it, so none is redrawn.
+      // f cos / p = k_s (n + 2) / (n + 1) cos(theta_i).
+      const vec3 local = sample_phong_lobe(u, bsdf.exponent);
+      const vec3 wi = Onb(lobe_axis(n, wo)).to_world(local);
+      const double pdf = phong_lobe_pdf(local.z, bsdf.exponent);
+      if (!same_side(n, wo, wi) || !(pdf > 0)) return std::nullopt;
+      return BsdfSample{wi, bsdf_f(bsdf, n, wo, wi) * std::abs(dot(n, wi)) / pdf, pdf, false};
+    }
   }
   return std::nullopt;
 }

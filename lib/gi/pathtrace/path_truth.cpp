@@ -3,6 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "gi/pathtrace/bsdf.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 
 namespace gi {
@@ -36,6 +37,7 @@ std::string path_truth_fingerprint(const PathScene& scene, const PathSettings& s
   for (const Material& m : s.materials) {
     for (const Color& c : {m.diffuse, m.mirror, m.transmission, m.emission, m.checker_diffuse}) f.add(c);
     f.add(m.ior), f.add(m.checker_size);
+    if (is_glossy(m)) f.add(m.specular), f.add(m.shininess);  // only then is the highlight seen
   }
   for (const Sphere& x : s.spheres) f.add(x.center), f.add(x.radius), f.add(double(x.material));
   for (const Plane& x : s.planes) f.add(x.point), f.add(x.normal), f.add(double(x.material));
