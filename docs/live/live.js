@@ -134,7 +134,7 @@
     state.status = null;
     state.files = {};
     state.lines = [];
-    for (const id of ['outputs', 'tables', 'files', 'log']) $(id).textContent = '';
+    for (const id of ['outputs', 'tables', 'files', 'log', 'pages']) $(id).textContent = '';
     $('run').disabled = true;
     $('stop').disabled = false;
     $('progress').value = 0;
@@ -160,6 +160,50 @@
                    3: 'stopped at an exercise not done yet'}[status] || 'ended';
       say(`${why}${time}: status ${status}`, true);
     }
+    offerPages();
+  }
+
+  // ---- the pages a run writes: its report page and, for lessons 08-13, its viewer ----
+
+  // A page the run wrote, made whole: each script and style sheet it names from the
+  // run (viewer_data.js, viewer.css) put inside it, and each picture or file it links
+  // as a data: address. It is then opened from memory as a blob: a page in memory has
+  // no folder for relative names to be found in, and may not load another blob. A
+  // name outside the run's files (the chapter, another page) is left as it is.
+  function base64Of(bytes) {
+    let text = '';
+    for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+    return btoa(text);
+  }
+
+  function pageUrl(path) {
+    const folder = path.slice(0, path.lastIndexOf('/') + 1);
+    const file = (name) => state.files[folder + name];
+    const text = (f) => new TextDecoder().decode(f.bytes);
+    let page = text(state.files[path]);
+    page = page.replace(/<script src="([^"#?:]+)"><\/script>/g, (whole, name) =>
+      file(name) ? '<script>' + text(file(name)).replace(/<\/script/gi, '<\\/script') + '</script>' : whole);
+    page = page.replace(/<link rel="stylesheet" href="([^"#?:]+)">/g, (whole, name) =>
+      file(name) ? '<style>' + text(file(name)) + '</style>' : whole);
+    page = page.replace(/\b(src|href)="([^"#?:]+)"/g, (whole, attribute, name) => {
+      const f = file(name);
+      if (!f || name.endsWith('.html')) return whole;
+      const type = TYPES[name.split('.').pop()] || 'application/octet-stream';
+      return `${attribute}="data:${type};base64,${base64Of(f.bytes)}"`;
+    });
+    return URL.createObjectURL(new Blob([page], {type: 'text/html'}));
+  }
+
+  function offerPages() {
+    const links = $('pages');
+    links.textContent = '';
+    const folder = 'out/' + GI_LIVE.lesson + '/';
+    const offers = [['viewer.html', 'Open the interactive viewer', 'viewer-link'],
+                    ['index.html', 'Open the report page of this run', '']];
+    for (const [name, text, kind] of offers) {
+      if (!state.files[folder + name]) continue;
+      links.append(element('a', {href: pageUrl(folder + name), target: '_blank', class: kind, text}), ' ');
+    }
   }
 
   function stop() {
@@ -171,6 +215,7 @@
     $('run').disabled = false;
     $('stop').disabled = true;
     say('stopped: the run was ended before it finished; the outputs below are what it had written', true);
+    offerPages();
     startWorker();
   }
 

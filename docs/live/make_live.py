@@ -91,6 +91,7 @@ would, in the same bytes.</p>
 </div>
 <p>The same run on a terminal: <code id="command"></code></p>
 <p id="status"></p>
+<p class="links" id="pages"></p>
 </form>
 <h2>What it printed</h2>
 <pre id="log"></pre>

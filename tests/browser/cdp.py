@@ -117,7 +117,8 @@ class Page:
     def __init__(self, browser, width, height):
         self.browser = browser
         target = browser.send("Target.createTarget", {"url": "about:blank"})
-        self.session = browser.send("Target.attachToTarget", {"targetId": target["targetId"], "flatten": True})["sessionId"]
+        self.target = target["targetId"]
+        self.session = browser.send("Target.attachToTarget", {"targetId": self.target, "flatten": True})["sessionId"]
         for domain in ("Page", "Runtime", "Log"):
             self.send(domain + ".enable")
         self.send("Emulation.setDeviceMetricsOverride",

@@ -14,7 +14,8 @@ and checks, for every lesson that wasm_test.py compares:
     tolerance wasm_test.py states;
   - a bad option value ends the run with status 2 and shows the native program's
     one error line;
-and, once, that Stop ends a long run within a second and a run after it works.
+and, once, that Stop ends a long run within a second and a run after it works, and
+that the report page and the viewer a run writes (lesson 08's) open from the page.
 Each lesson's time in the page is printed beside the native one's. Exits 77 (ctest's
 "skipped") with one line when WASM_BIN, Node.js or Chromium is missing. Python 3.9
 and its standard library only.
@@ -123,6 +124,26 @@ def form_holds_the_options(page, lesson, wasm_bin):
     check(not errors, f"{lesson}: the page logged {errors[:3]}")
 
 
+def pages_of_the_run_open(browser, page, lesson):
+    """After a run, the page offers the run's own report page and viewer, each made
+    whole (its scripts, styles and pictures inside it): each opens in a tab of its own
+    with no error, the viewer with its canvas drawn."""
+    offered = page.evaluate("[...document.querySelectorAll('#pages a')].map(a => [a.className, a.href])")
+    kinds = sorted(kind or "report" for kind, _ in offered)
+    if not check(kinds == ["report", "viewer-link"], f"{lesson}: the page offers {kinds}, not the report and viewer"):
+        return
+    for kind, url in offered:
+        tab = Page(browser, 1200, 900)
+        tab.open(url)
+        if kind == "viewer-link":
+            tab.wait_until("document.querySelector('canvas') && document.querySelector('canvas').width > 0",
+                           f"{lesson}: the run's viewer")
+        else:
+            check(tab.evaluate("document.querySelectorAll('img').length") > 0, f"{lesson}: the run's report shows no picture")
+        check(not tab.errors(), f"{lesson}: the run's {kind or 'report'} page logged {tab.errors()[:3]}")
+        browser.send("Target.closeTarget", {"targetId": tab.target})
+
+
 def stop_ends_a_long_run(page):
     lesson = "14_path_tracing"  # its defaults take tens of seconds in the page
     page.open(address(page.pages, lesson, ""))
@@ -184,6 +205,8 @@ def main():
                 print(f"{lesson:32} {seconds:19.2f} {native_seconds:22.2f}")
                 if check(status == 0, f"{lesson}: the page's run ended with status {status}"):
                     compare(lesson, native_out, files, tolerance, work)
+                    if lesson == "08_radiosity_system":  # the first lesson with a viewer
+                        pages_of_the_run_open(browser, page, lesson)
                 refused = subprocess.run([str(native_bin / lesson), *bad.split(), "--out", str(work / "refused")],
                                          capture_output=True, text=True)
                 status, _, _, lines = run_in_page(page, address(pages, lesson, bad))
