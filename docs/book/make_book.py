@@ -52,6 +52,7 @@ def write_whole(path, data):
     try:
         with os.fdopen(fd, "wb") as f:
             f.write(data.encode() if isinstance(data, str) else data)
+        os.chmod(temporary, 0o644)  # mkstemp's 0600 would hide the page from a web server
         os.replace(temporary, path)
     except BaseException:
         os.unlink(temporary)

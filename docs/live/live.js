@@ -2,7 +2,9 @@
 // own program, compiled to WebAssembly, run in a Web Worker (live_worker.js) from a
 // form built from the lesson's option table (--options-json). The form's values go to
 // the program as a command line; the program checks them, as it checks a terminal's,
-// and its one-line error is shown as it is. What the program prints and writes appears
+// and its one-line error is shown as it is (the form is `novalidate`: the browser's
+// own range checks would speak in the program's place; min and max only bound the
+// number fields' arrows). What the program prints and writes appears
 // as it comes: lines, pictures, charts, tables.
 //
 // The page reads `?name=value` from its address into the form (`?run` also starts the
@@ -156,9 +158,11 @@
       $('progress').value = 100;
       say(`done${time}: status 0, ${Object.keys(state.files).length} files written`);
     } else {
-      const why = {1: 'failed while running', 2: 'refused: a bad option (the line above says which)',
-                   3: 'stopped at an exercise not done yet'}[status] || 'ended';
-      say(`${why}${time}: status ${status}`, true);
+      // The program's own last word on stderr says why: "--width must be in [16, 4096], got 5".
+      const errors = state.lines.filter((l) => l.stream === 'stderr');
+      const last = errors.length ? ': ' + errors[errors.length - 1].text : '';
+      const why = {1: 'failed while running', 2: 'refused', 3: 'stopped at an exercise not done yet'}[status] || 'ended';
+      say(`${why}${time}, status ${status}${last}`, true);
     }
     offerPages();
   }

@@ -23,33 +23,18 @@ import argparse
 import base64
 import html
 import json
-import os
-import re
 import sys
-import tempfile
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / "book"))
+from make_book import write_whole  # noqa: E402  a page is written whole or not at all
 # The lessons that read lessons/references/ (GI_SOURCE_DIR/lessons/references/...).
 READS_REFERENCES = {"12_solver_showdown", "13_hierarchical", "14_path_tracing", "15_radiosity_vs_path_tracing",
                     "16_two_pass"}
 # The most a page may load, all scripts together: a lecture hall's network, or a
 # student's phone, opens it in a few seconds.
 BUDGET_MB = 6.0
-
-
-def write_whole(path, data):
-    """Writes a file whole or not at all: a page never loads half a script."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data.encode() if isinstance(data, str) else data)
-        os.chmod(temporary, 0o644)  # mkstemp's 0600 would hide the page from a web server
-        os.replace(temporary, path)
-    except BaseException:
-        os.unlink(temporary)
-        raise
 
 
 def title_of(lesson):
@@ -80,7 +65,7 @@ def page(lesson, references):
 thread, with nothing installed. Change a setting and press Run: the program checks the
 settings as it checks a terminal's, then prints and writes what the native program
 would, in the same bytes.</p>
-<form id="form">
+<form id="form" novalidate>
 <div class="fields" id="fields"></div>
 <div class="controls">
 <button type="submit" id="run" disabled>Run</button>
@@ -155,7 +140,10 @@ def main():
     parser.add_argument("lessons", nargs="*", help="lessons to make (default: every BIN/NN_name.js)")
     args = parser.parse_args()
 
-    programs = sorted(p for p in args.bin.glob("[0-9][0-9]_*.js") if re.fullmatch(r"\d\d_[a-z0-9_]+\.js", p.name))
+    # A lesson is a folder lessons/NN_name/ with its main.cpp; other programs (the
+    # benchmarks, 14_make_reference) have no page.
+    programs = sorted(p for p in args.bin.glob("[0-9][0-9]_*.js")
+                      if (args.source_dir / "lessons" / p.stem / "main.cpp").is_file())
     lessons = [p.stem for p in programs if not args.lessons or p.stem in args.lessons]
     if not lessons:
         print(f"make_live.py: no lesson programs (NN_name.js) in {args.bin}: build them with "
@@ -182,7 +170,8 @@ def main():
     if over:
         print(f"make_live.py: pages over the budget of {BUDGET_MB} MB: " + ", ".join(over), file=sys.stderr)
         return 1
-    print(f"make_live.py: {len(lessons)} live pages in {args.out} (open {shared / 'index.html'})")
+    pages = "1 live page" if len(lessons) == 1 else f"{len(lessons)} live pages"
+    print(f"make_live.py: {pages} in {args.out} (open {shared / 'index.html'})")
     return 0
 
 
