@@ -234,6 +234,24 @@ TEST(ReportPage, LinksTheChapterPageWhereTheBookMadeOne) {
   at(index, "href=\"book/index.html\"");
 }
 
+// Where the WebAssembly build has made the lesson's live page (docs/live/make_live.py),
+// the lesson's page links it, and the index links the list of live pages; elsewhere
+// neither is named.
+TEST(ReportPage, LinksTheLivePageWhereTheWebAssemblyBuildMadeOne) {
+  const fs::path out = scratch("live");
+  const gi::LessonGuide guide = gi::read_guide(gi::doc_openings().front().contents, gi::doc_openings().front().name);
+  const fs::path folder = out / guide.lesson;
+  fs::create_directories(folder);
+  const gi::RunSummary run{guide.lesson, "", "complete", {}, true, folder, guide};
+  EXPECT_EQ(gi::report_page(run, {}).find("live.html"), std::string::npos);
+  EXPECT_EQ(gi::lessons_index_page(out).find("live/index.html"), std::string::npos);
+  std::ofstream(folder / "live.html") << "page";
+  fs::create_directories(out / "live");
+  std::ofstream(out / "live" / "index.html") << "list";
+  at(gi::report_page(run, {}), "<a class=\"live-link\" href=\"live.html\">Run it in the browser</a>");
+  at(gi::lessons_index_page(out), "<a class=\"live\" href=\"live/index.html\">");
+}
+
 // The index is the course's table of contents: every lesson with a doc has its row,
 // its title, the first sentence of what it shows and links to its chapter and lab,
 // whether or not it has run.
