@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     const double seconds = timer.seconds();
 
     std::vector<gi::Column> columns{{"estimator"}, {"N", 0}};
-    for (gi::SamplerKind kind : samplers) columns.push_back({std::string(gi::sampler_name(kind)) + " RMS", 3, gi::Format::Scientific});
+    for (gi::SamplerKind kind : samplers) columns.push_back({std::string(gi::sequence_name(kind)) + " RMS", 3, gi::Format::Scientific});
     gi::Table errors("Relative RMS error of the mean of N samples, over " + std::to_string(settings.pixels) + " pixels",
                      columns);
     const std::size_t counts = settings.sample_counts.size();
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
                      {{"estimator"}, {"sampler"}, {"slope", 3, gi::Format::Fixed}, {"+-", 3, gi::Format::Fixed},
                       {"theory", 2, gi::Format::Fixed}});
     for (const gi::StudySlope& s : study.slopes)
-      slopes.add_row({s.estimator, gi::sampler_name(s.sampler), s.slope, s.standard_error, s.expected});
+      slopes.add_row({s.estimator, gi::sequence_name(s.sampler), s.slope, s.standard_error, s.expected});
     lesson.table(slopes, "slopes");
     lesson.say("study: " + gi::format_number(seconds, 2, gi::Format::Fixed) + " s on " +
                std::to_string(lesson.threads()) + " threads");

@@ -24,7 +24,7 @@ class EverySampler : public ::testing::TestWithParam<SamplerKind> {};
 INSTANTIATE_TEST_SUITE_P(Kinds, EverySampler,
                          ::testing::Values(SamplerKind::Independent, SamplerKind::Stratified, SamplerKind::Sobol),
                          [](const auto& info) { return std::string(info.param == SamplerKind::Sobol ? "Sobol"
-                                                                   : gi::sampler_name(info.param)); });
+                                                                   : gi::sequence_name(info.param)); });
 
 // Pearson's correlation of (x_k, y_k).
 double correlation(const std::vector<double>& x, const std::vector<double>& y) {

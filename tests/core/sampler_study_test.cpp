@@ -46,7 +46,7 @@ TEST(SamplerStudy, EveryEstimatorIsUnbiasedWithEverySampler) {
         }
         const t::Estimate m = t::estimate(pixels);
         EXPECT_NEAR(m.mean, e.exact, 5 * m.standard_error)
-            << e.name << ", " << gi::sampler_name(kind) << ", " << n << " samples: standard error " << m.standard_error;
+            << e.name << ", " << gi::sequence_name(kind) << ", " << n << " samples: standard error " << m.standard_error;
       }
 }
 
@@ -58,7 +58,7 @@ TEST(SamplerStudy, ErrorFallsAtTheRateOfEachSampler) {
   ASSERT_EQ(study.slopes.size(), 12u);
   ASSERT_EQ(study.rows.size(), 60u);
   for (const gi::StudySlope& s : study.slopes) {
-    const std::string what = s.estimator + ", " + gi::sampler_name(s.sampler);
+    const std::string what = s.estimator + ", " + gi::sequence_name(s.sampler);
     EXPECT_LT(s.standard_error, 0.03) << what << ": too few pixels to tell the slopes apart";
     if (s.sampler == SamplerKind::Independent) {
       EXPECT_NEAR(s.slope, -0.5, 0.07) << what << ": independent samples converge as N^-1/2";

@@ -30,13 +30,22 @@ SobolSeeds sobol_seeds(std::uint64_t dimension_seed) {
 
 }  // namespace
 
-const char* sampler_name(SamplerKind kind) {
+const char* sequence_name(SamplerKind kind) {
   switch (kind) {
     case SamplerKind::Independent: return "independent";
     case SamplerKind::Stratified: return "stratified";
     case SamplerKind::Sobol: return "Sobol'";
   }
   return "?";
+}
+
+std::vector<std::string> sequence_option_names() { return {"independent", "stratified", "sobol"}; }
+
+SamplerKind sequence_from_name(const std::string& name) {
+  const std::vector<std::string> names = sequence_option_names();
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (name == names[k]) return static_cast<SamplerKind>(k);
+  throw std::invalid_argument("unknown number sequence '" + name + "' (independent, stratified, sobol)");
 }
 
 SampleSequence make_sample_sequence(SamplerKind kind, std::uint64_t seed, std::uint32_t samples_per_pixel) {

@@ -23,14 +23,23 @@
 // order of calls, no thread in it, and integer arithmetic to the last step (numbers are
 // integers times 2^-32 or 2^-53), so the same on every compiler and machine.
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "gi/core/math.hpp"
 #include "gi/core/samplers/stratified.hpp"
 
 namespace gi {
 
+// The number sequence a render's samples read, a choice apart from the pixel pattern
+// (render/pixel_samplers.hpp, whose names are sampler_name's): one names where in the
+// pixel the eye rays go, the other which numbers every decision of a sample reads.
 enum class SamplerKind { Independent, Stratified, Sobol };
-const char* sampler_name(SamplerKind kind);  // "independent", "stratified", "Sobol'"
+const char* sequence_name(SamplerKind kind);  // "independent", "stratified", "Sobol'": as tables print it
+// The names an option takes, "independent", "stratified", "sobol", and back;
+// sequence_from_name throws std::invalid_argument for any other.
+std::vector<std::string> sequence_option_names();
+SamplerKind sequence_from_name(const std::string& name);
 
 struct SampleSequence {
   SamplerKind kind = SamplerKind::Independent;
