@@ -11,9 +11,10 @@
 //   Stratified   sample i of N in stratum pi_d(i) of N, a random permutation pi_d per
 //                dimension (stratified.hpp); 2D strata an nx x ny grid. Samples N b to
 //                N b + N - 1 are stratified set b (a renderer may go on past N)
-//   Sobol        the (0,2)-sequence of Sobol' (sobol.hpp), Owen-scrambled per pixel and
-//                dimension (owen_scramble.hpp): the first 2^m samples, and every later
-//                block of 2^m, are a (0,m,2)-net; no N needs to be known
+//   Sobol        the (0,2)-sequence of Sobol' (sobol.hpp), each coordinate Owen-scrambled
+//                per pixel and dimension by owen_scramble (exercise 14.7): the first 2^m
+//                samples, and every later block of 2^m, are a (0,m,2)-net; no N needs
+//                to be known
 // and different dimensions, and different pixels, are independent of each other. Only
 // within a dimension are the samples spread: a path's 2D decisions are not spread
 // jointly in 4D or more ("padding" 2D points, as pbrt-v4's PaddedSobolSampler and
