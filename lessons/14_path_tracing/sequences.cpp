@@ -6,7 +6,7 @@
 // whatever the integrand. Stratified and Sobol' numbers spread each dimension evenly
 // over the pixel's N samples, so where the pixel's integrand is smooth in the
 // dimensions that carry its noise, the error falls faster -- up to N^-1 and N^-3/2 for
-// a smooth integral (gi/core/samplers/sampler_study.hpp). On the box that is the direct
+// a smooth integral (gi/render/sampler_study.hpp). On the box that is the direct
 // light on the bright walls: the point on the light and the first BSDF direction. The
 // two measures below weigh the pixels differently. Over the picture's mean, each pixel
 // counts by its brightness, and the well-spread sequences pull ahead. Per pixel, the
@@ -20,7 +20,7 @@
 #include <iterator>
 #include <vector>
 
-#include "gi/core/samplers/sampler_study.hpp"
+#include "gi/render/sampler_study.hpp"
 #include "gi/image/diff.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/path_trace.hpp"

@@ -59,7 +59,7 @@ TEST(Sequences, EverySequenceIsUnbiasedOnASmoothPixelIntegral) {
 
 // At N = 16 samples a pixel's independent estimate has variance sigma^2 / N; on a smooth
 // integrand in 2D, stratified numbers leave O(N^-2) (an RMS error falling as N^-1, as in
-// sampler_study.hpp's table), Sobol's O(N^-3 log N). Asked for here: less than a quarter
+// gi/render/sampler_study.hpp's table), Sobol's O(N^-3 log N). Asked for here: less than a quarter
 // of the independent variance, a ratio that 2560 estimates each would give by chance
 // with a probability far below 10^-100 if the variances were equal. (Measured: about
 // 1/16 for stratified, 1/160 for Sobol'.)
