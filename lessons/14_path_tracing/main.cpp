@@ -178,11 +178,13 @@ int main(int argc, char** argv) {
       .add("--plates-spp", plates.spp, "samples per pixel of each strategy on Veach's plates (step 5)", 1, 1 << 12)
       .add("--sampler", sequence, "the numbers the pictures' paths read (step 2)", gi::sequence_option_names());
   std::optional<gi::PathScene> scene;
-  std::optional<gi::Truth> reference;
+  std::optional<gi::Truth> reference, sequences_reference;
   lesson.add_check([&] {  // before any work: a missing, damaged or stale reference is said at once
     scene.emplace(gi::make_path_scene(gi::make_path_scene_by_name(s.scene)));
     if (lesson14::uses_stored_reference(s))
       reference = gi::stored_truth_at(s.reference, "cornell", 256, s.width, s.height);
+    const int side = lesson14::sequence_settings(s.width, s.height, s.max_spp).side;  // step 6's
+    sequences_reference = gi::stored_truth_at(s.reference, "cornell", 256, side, side);
   });
   return lesson.run(argc, argv, [&] {
     s.threads = lesson.threads();
@@ -194,6 +196,8 @@ int main(int argc, char** argv) {
     speed(s, runs.back(), lesson);
     plates.width = s.width, plates.threads = s.threads, plates.seed = s.seed;
     lesson14::veach_plates(plates, lesson);  // 5. veach_plates.cpp
-    lesson14::sequences({s.reference, 64, 64, s.threads, s.seed}, lesson);  // 6. sequences.cpp
+    lesson14::SequenceSettings numbers = lesson14::sequence_settings(s.width, s.height, s.max_spp);
+    numbers.threads = s.threads, numbers.seed = s.seed;
+    lesson14::sequences(numbers, *sequences_reference, lesson);  // 6. sequences.cpp
   });
 }

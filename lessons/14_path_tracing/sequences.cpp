@@ -15,6 +15,7 @@
 // but not jointly, and there every sequence stays near N^-1/2.
 #include "sequences.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <iterator>
@@ -24,7 +25,6 @@
 #include "gi/image/diff.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/path_trace.hpp"
-#include "gi/pathtrace/path_truth.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/table.hpp"
 
@@ -76,9 +76,15 @@ PictureError picture_error(const gi::Image& test, const gi::Image& reference, in
 
 }  // namespace
 
-void sequences(const SequenceSettings& s, gi::Lesson& lesson) {
+SequenceSettings sequence_settings(int width, int height, int max_spp) {
+  SequenceSettings s;
+  while (s.side > std::min(width, height)) s.side /= 2;
+  s.max_spp = std::clamp(max_spp, 2, 64);
+  return s;
+}
+
+void sequences(const SequenceSettings& s, const gi::Truth& reference, gi::Lesson& lesson) {
   const gi::PathScene scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell"));
-  const gi::Truth reference = gi::stored_truth_at(s.reference, "cornell", 256, s.side, s.side);
   std::vector<int> counts;
   for (int n = 1; n <= s.max_spp; n *= 2) counts.push_back(n);
 
