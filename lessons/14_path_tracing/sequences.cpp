@@ -21,10 +21,10 @@
 #include <iterator>
 #include <vector>
 
-#include "gi/render/sampler_study.hpp"
 #include "gi/image/diff.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/path_trace.hpp"
+#include "gi/render/sampler_study.hpp"
 #include "gi/report/chart.hpp"
 #include "gi/report/table.hpp"
 
@@ -50,8 +50,8 @@ gi::LogLogPoint rms_of(const std::vector<double>& squares, double samples) {
 // A picture's error against the reference, by two measures (grey, per pixel i):
 //   per pixel    e_i = (t_i - r_i) / r_i, leaving out pixels whose reference is below
 //                1e-3 of the mean: every pixel counts alike, the dark ones most
-//   over mean    d_i = (t_i - r_i) / mean r: each pixel by its brightness, the directly
-//                lit walls most
+//   over mean    d_i = (t_i - r_i) / mean r: each pixel by its brightness, the bright
+//                ones most
 struct PictureError {
   gi::LogLogPoint per_pixel, over_mean;
   std::vector<double> relative;  // |e_i| per pixel, 0 where left out
