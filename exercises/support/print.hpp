@@ -69,7 +69,7 @@ inline void PrintTo(Split s, std::ostream* os) { print::name(s, {"Sah", "Median"
 inline void PrintTo(Acceleration a, std::ostream* os) { print::name(a, {"BruteForce", "BoundingBoxes", "Bvh"}, os); }
 inline void PrintTo(Sampler s, std::ostream* os) { print::name(s, {"centre", "grid", "random", "jittered", "adaptive"}, os); }
 inline void PrintTo(LightSampling s, std::ostream* os) { print::name(s, {"centre", "random", "jittered"}, os); }
-inline void PrintTo(SamplerKind k, std::ostream* os) { *os << sampler_name(k); }
+inline void PrintTo(SamplerKind k, std::ostream* os) { *os << sequence_name(k); }
 
 inline void PrintTo(const HemicubeCell& c, std::ostream* os) {
   *os << "{face ";

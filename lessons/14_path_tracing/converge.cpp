@@ -13,9 +13,12 @@ namespace lesson14 {
 namespace {
 
 // The picture's view, as its page describes it: spp paths per pixel, a box filter.
-gi::View view(const gi::PathScene& scene, int width, int height, int spp) {
-  return {scene.scene().camera, width, height,
-          std::to_string(spp) + " paths per pixel through uniform random points of it (box filter)"};
+gi::View view(const gi::PathScene& scene, int width, int height, int spp,
+              gi::SamplerKind sequence = gi::SamplerKind::Independent) {
+  const std::string points = sequence == gi::SamplerKind::Independent
+                                 ? "uniform random points of it"
+                                 : std::string(gi::sequence_name(sequence)) + " points of it";
+  return {scene.scene().camera, width, height, std::to_string(spp) + " paths per pixel through " + points + " (box filter)"};
 }
 
 }  // namespace
@@ -32,7 +35,8 @@ std::vector<Snapshot> converge(const gi::PathScene& scene, const Settings& s, gi
                                const gi::Truth& reference, gi::Lesson* pictures) {
   gi::PathSettings path = s.path;
   path.strategy = strategy;
-  gi::Film film = gi::make_film(s.width, s.height, s.seed);
+  // A stratified sequence is stratified over the last picture's spp.
+  gi::Film film = gi::make_film(s.width, s.height, s.seed, s.sequence, static_cast<std::uint32_t>(s.max_spp));
   std::vector<Snapshot> snapshots;
   std::vector<gi::Image> strip;  // the pictures at 1, 4, 16, ... spp, then the reference
   gi::Progress progress(gi::name(strategy), s.max_spp);
@@ -49,7 +53,7 @@ std::vector<Snapshot> converge(const gi::PathScene& scene, const Settings& s, gi
     if (pictures && power_of_four) {
       pictures->picture(picture, s.scene + "_" + std::to_string(spp) + "spp",
                         s.scene + ", " + gi::name(strategy) + ", " + std::to_string(spp) + " spp",
-                        view(scene, s.width, s.height, spp));
+                        view(scene, s.width, s.height, spp, s.sequence));
       strip.push_back(picture);
     }
   }

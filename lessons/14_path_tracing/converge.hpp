@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "gi/core/samplers/sample_stream.hpp"
 #include "gi/image/image.hpp"
 #include "gi/pathtrace/path_scene.hpp"
 #include "gi/pathtrace/path_truth.hpp"
@@ -17,6 +18,7 @@ struct Settings {
   std::uint64_t seed = 1;
   std::string scene = "cornell", reference;
   gi::PathSettings path;
+  gi::SamplerKind sequence = gi::SamplerKind::Independent;  // --sampler: the numbers the paths read
 };
 
 // The mean over the channels, and over the picture.

@@ -3,10 +3,11 @@
 // sampling); then the Cornell box at 1, 4, 16, ... samples per pixel against a converged
 // reference, with each picture's own variance; then BSDF sampling alone, light sampling
 // alone and both with MIS, error against time; last, Veach's glossy plates, where each
-// strategy alone fails somewhere and MIS does not.
+// strategy alone fails somewhere and MIS does not; last, the numbers the paths read:
+// independent, stratified and Sobol', error against samples per pixel.
 // The steps are below; converge.cpp runs one strategy on one film, reference.cpp makes
-// what each picture is measured against, monte_carlo.cpp is step 1 and veach_plates.cpp
-// step 5.
+// what each picture is measured against, monte_carlo.cpp is step 1, veach_plates.cpp
+// step 5 and sequences.cpp step 6.
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -22,6 +23,7 @@
 #include "gi/report/table.hpp"
 #include "monte_carlo.hpp"
 #include "reference.hpp"
+#include "sequences.hpp"
 #include "veach_plates.hpp"
 
 namespace {
@@ -35,7 +37,9 @@ using lesson14::Snapshot;
 // error its own variance predicts, sqrt(mean variance + the reference's).
 void picture_table(const std::vector<Snapshot>& mis, const gi::Truth& reference, const Settings& s,
                    gi::Lesson& lesson) {
-  gi::Table table("Path tracing (MIS), " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+  const std::string numbers =
+      s.sequence == gi::SamplerKind::Independent ? "" : std::string(", ") + gi::sequence_name(s.sequence) + " numbers";
+  gi::Table table("Path tracing (MIS" + numbers + "), " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                       ": a convergence study against the reference (the same estimator, many more samples)",
                   {{"spp"},
                    {"time (s)", 3},
@@ -156,10 +160,12 @@ void speed(const Settings& s, const std::vector<Snapshot>& mis, gi::Lesson& less
 
 int main(int argc, char** argv) {
   gi::Lesson lesson("14_path_tracing", "Path tracing the rendering equation: Monte Carlo, pictures at 1 to "
-                                       "4096 samples per pixel against a converged reference, and BSDF "
-                                       "sampling, light sampling and MIS, error against time.");
+                                       "4096 samples per pixel against a converged reference, BSDF "
+                                       "sampling, light sampling and MIS, error against time, and independent, "
+                                       "stratified and Sobol' numbers, error against samples.");
   Settings s;
   lesson14::PlatesSettings plates;
+  std::string sequence = "independent";
   s.reference = std::string(GI_SOURCE_DIR) + "/lessons/references/cornell_256x256";
   lesson.add_image_size(s.width, s.height);
   lesson.options()
@@ -169,22 +175,29 @@ int main(int argc, char** argv) {
       .add("--reference", s.reference, "the Cornell box's converged picture (files STEM.txt, STEM.pfm, ...)")
       .add("--reference-spp", s.reference_spp, "samples per pixel of a reference this lesson renders itself", 16,
            1 << 20)
-      .add("--plates-spp", plates.spp, "samples per pixel of each strategy on Veach's plates (step 5)", 1, 1 << 12);
+      .add("--plates-spp", plates.spp, "samples per pixel of each strategy on Veach's plates (step 5)", 1, 1 << 12)
+      .add("--sampler", sequence, "the numbers the pictures' paths read (step 2)", gi::sequence_option_names());
   std::optional<gi::PathScene> scene;
-  std::optional<gi::Truth> reference;
+  std::optional<gi::Truth> reference, sequences_reference;
   lesson.add_check([&] {  // before any work: a missing, damaged or stale reference is said at once
     scene.emplace(gi::make_path_scene(gi::make_path_scene_by_name(s.scene)));
     if (lesson14::uses_stored_reference(s))
       reference = gi::stored_truth_at(s.reference, "cornell", 256, s.width, s.height);
+    const int side = lesson14::sequence_settings(s.width, s.height, s.max_spp).side;  // step 6's
+    sequences_reference = gi::stored_truth_at(s.reference, "cornell", 256, side, side);
   });
   return lesson.run(argc, argv, [&] {
     s.threads = lesson.threads();
     s.seed = lesson.seed();
+    s.sequence = gi::sequence_from_name(sequence);
     lesson14::monte_carlo_warm_up(s, lesson);  // 1. monte_carlo.cpp
     const std::vector<std::vector<Snapshot>> runs = pictures(*scene, s, reference, lesson);
     strategies(s, runs, lesson);
     speed(s, runs.back(), lesson);
     plates.width = s.width, plates.threads = s.threads, plates.seed = s.seed;
     lesson14::veach_plates(plates, lesson);  // 5. veach_plates.cpp
+    lesson14::SequenceSettings numbers = lesson14::sequence_settings(s.width, s.height, s.max_spp);
+    numbers.threads = s.threads, numbers.seed = s.seed;
+    lesson14::sequences(numbers, *sequences_reference, lesson);  // 6. sequences.cpp
   });
 }

@@ -1,5 +1,5 @@
 // 14_sampler_bench: how fast the error of each sampler falls with the number of samples,
-// on four estimators whose answers are known (gi/core/samplers/sampler_study.hpp): a
+// on four estimators whose answers are known (gi/render/sampler_study.hpp): a
 // smooth integrand, a disk's indicator, and a square light's irradiance by next-event
 // estimation and by cosine-weighted BSDF sampling. For N = 4 ... 4096 samples it prints
 // the RMS error of a pixel's mean over many pixels, relative to the exact value, for
@@ -10,7 +10,7 @@
 #include <bit>
 #include <string>
 
-#include "gi/core/samplers/sampler_study.hpp"
+#include "gi/render/sampler_study.hpp"
 #include "gi/core/timer.hpp"
 #include "gi/report/lesson.hpp"
 
@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   gi::StudySettings settings;
   int max_samples = 4096;
   lesson.options()
-      .add("--pixels", settings.pixels, "independent estimates per sample count (the RMS is over them)", 16, 1 << 20)
+      .add("--pixels", settings.pixels, "independent estimates per sample count (the RMS is over them)", 16, 16384)
       .add("--max-samples", max_samples, "the largest N: N runs over the powers of 4 from 4 to it", 16, 1 << 20,
            gi::Rule{"a power of 4", [](long long n) {
                       return std::has_single_bit(std::uint64_t(n)) && std::countr_zero(std::uint64_t(n)) % 2 == 0;
@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     const double seconds = timer.seconds();
 
     std::vector<gi::Column> columns{{"estimator"}, {"N", 0}};
-    for (gi::SamplerKind kind : samplers) columns.push_back({std::string(gi::sampler_name(kind)) + " RMS", 3, gi::Format::Scientific});
+    for (gi::SamplerKind kind : samplers) columns.push_back({std::string(gi::sequence_name(kind)) + " RMS", 3, gi::Format::Scientific});
     gi::Table errors("Relative RMS error of the mean of N samples, over " + std::to_string(settings.pixels) + " pixels",
                      columns);
     const std::size_t counts = settings.sample_counts.size();
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
                      {{"estimator"}, {"sampler"}, {"slope", 3, gi::Format::Fixed}, {"+-", 3, gi::Format::Fixed},
                       {"theory", 2, gi::Format::Fixed}});
     for (const gi::StudySlope& s : study.slopes)
-      slopes.add_row({s.estimator, gi::sampler_name(s.sampler), s.slope, s.standard_error, s.expected});
+      slopes.add_row({s.estimator, gi::sequence_name(s.sampler), s.slope, s.standard_error, s.expected});
     lesson.table(slopes, "slopes");
     lesson.say("study: " + gi::format_number(seconds, 2, gi::Format::Fixed) + " s on " +
                std::to_string(lesson.threads()) + " threads");

@@ -155,6 +155,23 @@ TEST(PathTracer, SameBytesForAnyThreadCountAndAnySplitIntoPasses) {
   }
 }
 
+// Stratified and Sobol' numbers are functions of (pixel, sample, dimension): the same
+// bytes on 1 and 3 threads, and in one pass or three.
+TEST(PathTracer, EverySequenceGivesTheSameBytesOnOneAndThreeThreads) {
+  const gi::PathScene scene = gi::make_path_scene(gi::make_path_scene_by_name("cornell-spheres"));
+  for (const gi::SamplerKind kind : {gi::SamplerKind::Stratified, gi::SamplerKind::Sobol}) {
+    const auto render = [&](int threads, std::vector<int> passes) {
+      gi::Film film = gi::make_film(24, 20, 9, kind, 4);
+      for (int spp : passes) gi::path_trace(film, scene, {}, spp, threads);
+      return film;
+    };
+    const gi::Film one = render(1, {4}), three = render(3, {1, 3});
+    EXPECT_EQ(one.sum, three.sum) << gi::sequence_name(kind);
+    EXPECT_EQ(one.m2, three.m2) << gi::sequence_name(kind);
+    EXPECT_NE(one.sum, render(1, {2}).sum) << "more samples, another picture";
+  }
+}
+
 TEST(PathTracer, EachPixelsVarianceEstimateMatchesTheSpreadAcrossSeeds) {
   // The film's variance of a pixel's mean (from its own samples) against the variance
   // of that pixel's mean over 40 independent seeds, summed over all pixels: the two

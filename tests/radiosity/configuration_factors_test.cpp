@@ -9,10 +9,10 @@
 #include <stdexcept>
 
 #include "gi/core/math.hpp"
-#include "gi/core/samplers/sampler_study.hpp"
 #include "gi/radiosity/form_factors/form_factor_adaptive.hpp"
 #include "gi/radiosity/form_factors/form_factor_formulas.hpp"
 #include "gi/radiosity/form_factors/quadrature.hpp"
+#include "gi/render/sampler_study.hpp"
 
 using gi::vec3;
 using ld = gi::wide;

@@ -101,6 +101,51 @@ TEST(RenderPass, SameSeedSameFilmOnOneTwoAndThreeThreads) {
   EXPECT_NE(one.sum, other.sum);
 }
 
+// The independent sequence is the pixel's own stream, read in the order asked, whatever
+// the dimension (a 2D point's second coordinate first): a method that moves from
+// sample.rng to get_1d / get_2d keeps its pictures to the bit.
+TEST(RenderPass, TheIndependentSequenceIsThePixelsStreamInOrder) {
+  const auto by_stream = [](const gi::Ray&, gi::PixelSample& s) {
+    const double a = s.rng.uniform(), b = s.rng.uniform(), c = s.rng.uniform();
+    return Color(a, c, b);
+  };
+  const auto by_dimension = [](const gi::Ray&, gi::PixelSample& s) {
+    const double a = s.get_1d(17);
+    const vec2 u = s.get_2d(4);
+    return Color(a, u.x, u.y);
+  };
+  gi::Film one = gi::make_film(40, 35, 3), other = gi::make_film(40, 35, 3);
+  gi::render_pass(one, camera, {gi::Sampler::Random, 2}, by_stream, 2);
+  gi::render_pass(other, camera, {gi::Sampler::Random, 2}, by_dimension, 3);
+  EXPECT_EQ(one.sum, other.sum);
+  EXPECT_EQ(one.m2, other.m2);
+}
+
+// The other sequences are the sample stream of (pixel, sample, dimension), on any thread
+// count, and their Random points are the sequence's pixel dimension.
+TEST(RenderPass, StratifiedAndSobolReadTheSampleStream) {
+  for (const gi::SamplerKind kind : {gi::SamplerKind::Stratified, gi::SamplerKind::Sobol}) {
+    gi::Film film = gi::make_film(40, 35, 5, kind, 4);
+    int wrong = 0;
+    const auto check_numbers = [&](const gi::Ray&, gi::PixelSample& s) {
+      const gi::SampleStream stream(film.sequence, s.pixel, static_cast<std::uint32_t>(s.index));
+      const vec2 p = stream.get_2d(gi::pixel_dimension);
+      wrong += s.get_1d(9) != stream.get_1d(9) || s.get_2d(3) != stream.get_2d(3) ||
+               s.position != vec2(s.x + p.x, s.y + p.y);
+      return Color(s.get_1d(2));
+    };
+    gi::render_pass(film, camera, {gi::Sampler::Random, 2}, check_numbers, 1);
+    EXPECT_EQ(wrong, 0) << gi::sequence_name(kind);
+    gi::Film again = gi::make_film(40, 35, 5, kind, 4);
+    gi::render_pass(again, camera, {gi::Sampler::Random, 2}, [](const gi::Ray&, gi::PixelSample& s) {
+      return Color(s.get_1d(2));
+    }, 3);
+    EXPECT_EQ(again.sum, film.sum) << gi::sequence_name(kind) << ": 1 and 3 threads";
+  }
+  EXPECT_EQ(gi::sequence_from_name("sobol"), gi::SamplerKind::Sobol);
+  EXPECT_THROW(gi::sequence_from_name("halton"), std::invalid_argument);
+}
+
 TEST(RenderPass, SumsAndClampsOfRadianceFunctions) {
   const auto one = [](const gi::Ray&, gi::PixelSample&) { return Color(1.0, 2.0, 3.0); };
   const auto two = [](const gi::Ray&, gi::PixelSample&) { return Color(0.5); };

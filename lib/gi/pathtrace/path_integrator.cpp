@@ -45,7 +45,7 @@ void check(const PathSettings& s) {
                                 std::to_string(s.roulette_depth));
 }
 
-Color path_radiance(const PathScene& scene, const Ray& camera_ray, const PathSettings& settings, Rng& rng) {
+Color path_radiance(const PathScene& scene, const Ray& camera_ray, const PathSettings& settings, PixelSample& sample) {
   const Scene& s = scene.scene();
   const Lights& lights = scene.lights;
   const bool sample_lights = settings.strategy != Strategy::Bsdf && !lights.lights.empty();
@@ -75,15 +75,12 @@ Color path_radiance(const PathScene& scene, const Ray& camera_ray, const PathSet
     }
     if (bounce == settings.max_depth) break;
     const Bsdf bsdf = bsdf_at(material, hit->point);
+    const auto dimension = [&](Decision decision) { return path_dimension(static_cast<std::uint32_t>(bounce), decision); };
 
     // ---- Next-event estimation: a shadow ray to a point on a light -------------------
     if (sample_lights && !is_specular(bsdf)) {
-      // The numbers are drawn one at a time, the point's second coordinate before its
-      // first: as one call's arguments they would come in an order of the compiler's
-      // choosing (GCC's was this one), and the pictures would depend on the compiler.
-      const double u_choice = rng.uniform();
-      const double v = rng.uniform(), u0 = rng.uniform();
-      const vec2 u(u0, v);
+      const double u_choice = sample.get_1d(dimension(Decision::LightChoice));
+      const vec2 u = sample.get_2d(dimension(Decision::LightPoint));
       const LightSample y = sample_light(lights, s, hit->point, u_choice, u);
       const DirectSample direct = next_event_estimate(bsdf, hit->point, n, wo, y);
       if (max_component(direct.estimate) > 0 && unoccluded(scene.world, hit->point, n, y.point)) {
@@ -93,9 +90,9 @@ Color path_radiance(const PathScene& scene, const Ray& camera_ray, const PathSet
     }
 
     // ---- BSDF sampling: where the path goes next ------------------------------------
-    const double v = rng.uniform(), u0 = rng.uniform();  // one at a time, as above
-    const vec2 u(u0, v);
-    const std::optional<BsdfSample> next = sample_bsdf(bsdf, n, wo, u, rng.uniform());
+    const vec2 u = sample.get_2d(dimension(Decision::BsdfDirection));
+    const double u_lobe = sample.get_1d(dimension(Decision::BsdfLobe));
+    const std::optional<BsdfSample> next = sample_bsdf(bsdf, n, wo, u, u_lobe);
     if (!next || max_component(next->weight) <= 0) break;
     beta *= next->weight;
     after_specular = next->specular;
@@ -104,7 +101,8 @@ Color path_radiance(const PathScene& scene, const Ray& camera_ray, const PathSet
     ray = Ray{offset_origin(hit->point, n, next->wi, scene.world.scale), next->wi};
 
     // ---- Possibly terminate the path with Russian roulette ---------------------------
-    if (bounce + 1 >= settings.roulette_depth && !russian_roulette(beta, rng.uniform())) break;
+    if (bounce + 1 >= settings.roulette_depth && !russian_roulette(beta, sample.get_1d(dimension(Decision::Roulette))))
+      break;
   }
   return L;
 }

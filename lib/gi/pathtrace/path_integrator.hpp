@@ -1,8 +1,8 @@
 #pragma once
 #include "gi/core/ray.hpp"
-#include "gi/core/rng.hpp"
 #include "gi/pathtrace/mis.hpp"
 #include "gi/pathtrace/path_scene.hpp"
+#include "gi/render/render_pass.hpp"
 
 namespace gi {
 
@@ -23,6 +23,9 @@ struct PathSettings {
 void check(const PathSettings& settings);
 
 // The radiance arriving at ray.origin along -ray.direction (unit), one path's estimate.
-Color path_radiance(const PathScene& scene, const Ray& ray, const PathSettings& settings, Rng& rng);
+// Each decision reads its own dimension of the sample's numbers, path_dimension(bounce,
+// decision) (sample_stream.hpp): with a stratified or Sobol' sequence, the light points of
+// the first bounce are spread across the pixel's samples, and so are its BSDF directions.
+Color path_radiance(const PathScene& scene, const Ray& ray, const PathSettings& settings, PixelSample& sample);
 
 }  // namespace gi

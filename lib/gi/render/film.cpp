@@ -4,7 +4,7 @@
 
 namespace gi {
 
-Film make_film(int width, int height, std::uint64_t seed) {
+Film make_film(int width, int height, std::uint64_t seed, SamplerKind sequence, std::uint32_t samples_per_pixel) {
   if (width < 1 || height < 1 || width > 16384 || height > 16384)
     throw std::invalid_argument("film: width and height must lie in [1, 16384]");
   Film film;
@@ -15,6 +15,7 @@ Film make_film(int width, int height, std::uint64_t seed) {
   for (std::size_t i = 0; i < pixels; ++i) film.rng.emplace_back(seed, i);
   film.sum.assign(pixels, Color(0.0));
   film.m2.assign(pixels, Color(0.0));
+  film.sequence = make_sample_sequence(sequence, seed, samples_per_pixel);
   return film;
 }
 

@@ -5,6 +5,7 @@
 
 #include "gi/core/math.hpp"
 #include "gi/core/rng.hpp"
+#include "gi/core/samplers/sample_stream.hpp"
 #include "gi/image/image.hpp"
 
 namespace gi {
@@ -17,6 +18,8 @@ namespace gi {
 // own error bar, measured from its samples. Pixel i draws from stream i of the seed, and
 // every pass continues each pixel's stream where the last one left it: 1 + 3 samples
 // are the same as 4, and the picture is the same for any number of threads.
+// The film also names the number sequence its samples read (sample_stream.hpp): with
+// the independent one, the default, they read the pixel's stream in the order they ask.
 struct Film {
   int width = 0;
   int height = 0;
@@ -25,10 +28,12 @@ struct Film {
   std::vector<Rng> rng;     // pixel i draws from stream i of the seed
   std::vector<Color> sum;
   std::vector<Color> m2;
+  SampleSequence sequence;  // its seed is the film's; a stratified one's N is the spp the picture will reach
 };
 
-// Throws std::invalid_argument for a size outside [1, 16384].
-Film make_film(int width, int height, std::uint64_t seed);
+// Throws std::invalid_argument for a size outside [1, 16384], or samples_per_pixel 0.
+Film make_film(int width, int height, std::uint64_t seed, SamplerKind sequence = SamplerKind::Independent,
+               std::uint32_t samples_per_pixel = 1);
 
 // Adds x as the n-th sample (n counting it) of pixel i. A sample that is not a finite
 // number is added as 0 and the function returns false, for the caller to count it.

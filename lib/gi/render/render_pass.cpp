@@ -20,6 +20,20 @@ long long adaptive_rays_at_most(int levels) {
 
 }  // namespace
 
+double PixelSample::get_1d(std::uint32_t dimension) {
+  if (sequence.kind == SamplerKind::Independent) return rng.uniform();
+  return SampleStream(sequence, pixel, static_cast<std::uint32_t>(index)).get_1d(dimension);
+}
+
+vec2 PixelSample::get_2d(std::uint32_t dimension) {
+  if (sequence.kind == SamplerKind::Independent) {
+    const double v = rng.uniform();  // the second coordinate first (render_pass.hpp)
+    const double u = rng.uniform();
+    return {u, v};
+  }
+  return SampleStream(sequence, pixel, static_cast<std::uint32_t>(index)).get_2d(dimension);
+}
+
 int samples_per_pass(const Sampling& s) {
   return s.sampler == Sampler::Centre || s.sampler == Sampler::Adaptive ? 1 : s.n * s.n;
 }
@@ -45,7 +59,7 @@ void render_pass(Film& film, const Camera& camera, const Sampling& sampling, Rad
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * film.width + x;
-        PixelSample sample{x, y, {}, first_index, film.rng[i], tile};
+        PixelSample sample{x, y, {}, first_index, film.rng[i], tile, film.sequence, i};
         // L along the eye ray through point p of the pixel's unit square.
         const auto estimate = [&](vec2 p) {
           sample.position = vec2(x + p.x, y + p.y);
@@ -63,7 +77,13 @@ void render_pass(Film& film, const Camera& camera, const Sampling& sampling, Rad
         const std::vector<vec2>* positions = &fixed;
         if (sampling.sampler == Sampler::Random || sampling.sampler == Sampler::Jittered) {
           // The pattern is drawn whole, then its rays traced.
-          if (sampling.sampler == Sampler::Random) {
+          if (sampling.sampler == Sampler::Random && film.sequence.kind != SamplerKind::Independent) {
+            // Each sample's point from the sequence's pixel dimension, spread across the pixel's samples.
+            drawn.clear();
+            for (long long k = 0; k < added; ++k)
+              drawn.push_back(
+                  SampleStream(film.sequence, i, static_cast<std::uint32_t>(first_index + k)).get_2d(pixel_dimension));
+          } else if (sampling.sampler == Sampler::Random) {
             drawn.clear();
             random_positions(sampling.n * sampling.n, sample.rng, drawn);
           } else {

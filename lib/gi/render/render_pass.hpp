@@ -4,6 +4,7 @@
 
 #include "gi/core/ray.hpp"
 #include "gi/core/rng.hpp"
+#include "gi/core/samplers/sample_stream.hpp"
 #include "gi/render/film.hpp"
 #include "gi/render/pixel_samplers.hpp"
 #include "gi/scene/camera.hpp"
@@ -19,7 +20,13 @@ namespace gi {
 //   I(x, y) = integral over the pixel of L(ray through (x + u, y + v)) du dv,
 // estimated by the mean over the sampler's points (pixel_samplers.hpp).
 
-// What a radiance function knows of the sample it estimates.
+// What a radiance function knows of the sample it estimates, and the numbers it reads.
+// A method that takes its decisions at fixed dimensions (path_dimension) reads them with
+// get_1d(d) and get_2d(d): the film's number sequence (sample_stream.hpp) for this pixel
+// and sample. With the independent sequence they are the pixel's stream, drawn in the
+// order they are asked for, whatever d: every picture made before the sequences came to
+// the pipeline stays the same. A 2D point draws its second coordinate first, the order
+// the path tracer has always drawn its points in.
 struct PixelSample {
   int x = 0, y = 0;     // the pixel
   vec2 position;        // where the eye ray crosses the image, in pixels: x + u, y + v
@@ -27,6 +34,11 @@ struct PixelSample {
   Rng& rng;             // the pixel's random stream: whatever the method draws, it draws from here
   int task = 0;         // the tile being rendered (0 .. render_tasks - 1): a method may keep a
                         // tally per tile (rays cast) without a lock
+  const SampleSequence& sequence;  // the film's number sequence
+  std::uint64_t pixel = 0;         // y * width + x: which pixel's numbers
+
+  double get_1d(std::uint32_t dimension);
+  vec2 get_2d(std::uint32_t dimension);
 };
 
 // A radiance function, not owned: one indirect call per sample, and any callable will do
@@ -49,7 +61,8 @@ class RadianceFunction {
 
 // Adds one pass of `sampling` to every pixel of `film`: the pattern's eye rays through the
 // camera (Centre 1, Grid, Random and Jittered n x n, Adaptive one estimate of the pixel from
-// its corners and splits), each estimated by `radiance`. The film's count grows by the
+// its corners and splits), each estimated by `radiance`. With a stratified or Sobol'
+// sequence, Random's points are the sequence's pixel dimension (pixel_dimension). The film's count grows by the
 // pass's samples. The picture is cut into 32 x 32 tiles that `threads` (0 = all cores)
 // take in turn; a pixel draws only from its own stream, so the film is the same for any
 // thread count. Throws std::invalid_argument for bad sampling or camera settings.

@@ -19,7 +19,10 @@ double fraction(std::uint32_t digits) { return digits * 0x1p-32; }  // exact, an
 // the first 2^m samples are still a (0,m,2)-net, but which net points they are, and in
 // which order, belongs to this pixel and dimension alone -- without it every dimension
 // would walk the sequence in step, and a path's decisions would move together. Then each
-// coordinate is Owen-scrambled with a seed of its own.
+// coordinate is Owen-scrambled with a seed of its own, by owen_scramble itself, the
+// lecture's scramble digit by digit (exercise 14.7): a picture made with Sobol' numbers
+// shows the scramble its reader wrote. The index shuffle only has to decorrelate the
+// dimensions, and takes the hashed scramble, five multiplications.
 struct SobolSeeds {
   std::uint32_t shuffle, x, y;
 };
@@ -30,13 +33,22 @@ SobolSeeds sobol_seeds(std::uint64_t dimension_seed) {
 
 }  // namespace
 
-const char* sampler_name(SamplerKind kind) {
+const char* sequence_name(SamplerKind kind) {
   switch (kind) {
     case SamplerKind::Independent: return "independent";
     case SamplerKind::Stratified: return "stratified";
     case SamplerKind::Sobol: return "Sobol'";
   }
   return "?";
+}
+
+std::vector<std::string> sequence_option_names() { return {"independent", "stratified", "sobol"}; }
+
+SamplerKind sequence_from_name(const std::string& name) {
+  const std::vector<std::string> names = sequence_option_names();
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (name == names[k]) return static_cast<SamplerKind>(k);
+  throw std::invalid_argument("unknown number sequence '" + name + "' (independent, stratified, sobol)");
 }
 
 SampleSequence make_sample_sequence(SamplerKind kind, std::uint64_t seed, std::uint32_t samples_per_pixel) {
@@ -73,7 +85,7 @@ double SampleStream::get_1d(std::uint32_t dimension) const {
     case SamplerKind::Sobol: {
       const SobolSeeds s = sobol_seeds(child_seed(pixel_seed_, dimension));
       const std::uint32_t i = owen_scramble_hashed(index_, s.shuffle);
-      return fraction(owen_scramble_hashed(sobol(i, 0), s.x));
+      return fraction(owen_scramble(sobol(i, 0), s.x));
     }
   }
   return 0;
@@ -96,7 +108,7 @@ vec2 SampleStream::get_2d(std::uint32_t dimension) const {
     case SamplerKind::Sobol: {
       const SobolSeeds s = sobol_seeds(child_seed(pixel_seed_, dimension));
       const std::uint32_t i = owen_scramble_hashed(index_, s.shuffle);
-      return {fraction(owen_scramble_hashed(sobol(i, 0), s.x)), fraction(owen_scramble_hashed(sobol(i, 1), s.y))};
+      return {fraction(owen_scramble(sobol(i, 0), s.x)), fraction(owen_scramble(sobol(i, 1), s.y))};
     }
   }
   return {0, 0};

@@ -11,9 +11,10 @@
 //   Stratified   sample i of N in stratum pi_d(i) of N, a random permutation pi_d per
 //                dimension (stratified.hpp); 2D strata an nx x ny grid. Samples N b to
 //                N b + N - 1 are stratified set b (a renderer may go on past N)
-//   Sobol        the (0,2)-sequence of Sobol' (sobol.hpp), Owen-scrambled per pixel and
-//                dimension (owen_scramble.hpp): the first 2^m samples, and every later
-//                block of 2^m, are a (0,m,2)-net; no N needs to be known
+//   Sobol        the (0,2)-sequence of Sobol' (sobol.hpp), each coordinate Owen-scrambled
+//                per pixel and dimension by owen_scramble (exercise 14.7): the first 2^m
+//                samples, and every later block of 2^m, are a (0,m,2)-net; no N needs
+//                to be known
 // and different dimensions, and different pixels, are independent of each other. Only
 // within a dimension are the samples spread: a path's 2D decisions are not spread
 // jointly in 4D or more ("padding" 2D points, as pbrt-v4's PaddedSobolSampler and
@@ -23,14 +24,23 @@
 // order of calls, no thread in it, and integer arithmetic to the last step (numbers are
 // integers times 2^-32 or 2^-53), so the same on every compiler and machine.
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "gi/core/math.hpp"
 #include "gi/core/samplers/stratified.hpp"
 
 namespace gi {
 
+// The number sequence a render's samples read, a choice apart from the pixel pattern
+// (render/pixel_samplers.hpp, whose names are sampler_name's): one names where in the
+// pixel the eye rays go, the other which numbers every decision of a sample reads.
 enum class SamplerKind { Independent, Stratified, Sobol };
-const char* sampler_name(SamplerKind kind);  // "independent", "stratified", "Sobol'"
+const char* sequence_name(SamplerKind kind);  // "independent", "stratified", "Sobol'": as tables print it
+// The names an option takes, "independent", "stratified", "sobol", and back;
+// sequence_from_name throws std::invalid_argument for any other.
+std::vector<std::string> sequence_option_names();
+SamplerKind sequence_from_name(const std::string& name);
 
 struct SampleSequence {
   SamplerKind kind = SamplerKind::Independent;

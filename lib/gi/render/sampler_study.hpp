@@ -11,12 +11,17 @@
 // A jump (an edge, a shadow's border, a light's outline seen by a BSDF ray) caps the
 // well-spread samplers at -3/4: the O(sqrt N) strata the edge crosses keep their
 // variance. A smooth integrand lets Sobol' pull ahead.
+//
+// The pixels are a film's, rendered by render_pass with the estimator as the radiance
+// function: the one pixel loop of the course, whose numbers (sample_stream.hpp) the
+// estimators read as a path tracer's decisions read them.
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "gi/core/samplers/sample_stream.hpp"
+#include "gi/render/render_pass.hpp"
 
 namespace gi {
 
@@ -24,13 +29,13 @@ struct Estimator {
   std::string name;
   double exact = 0;     // the expected value of `sample`, in closed form
   bool smooth = false;  // which row of the table above it belongs to
-  std::function<double(const SampleStream&)> sample;  // one sample's estimate, from its decisions
+  std::function<double(PixelSample&)> sample;  // one sample's estimate, from its decisions
 };
 
 // The study's four estimators, each a decision of a path at its own dimension:
-//   smooth      exp(-(x^2 + y^2)) over the unit square, at the pixel's dimension:
-//               ((sqrt(pi) / 2) erf(1))^2
-//   disk        the indicator of the disk of area 1/2 centred in the unit square
+//   smooth      exp(-(x^2 + y^2)) over the pixel's square, (x, y) where its eye ray
+//               crosses it: ((sqrt(pi) / 2) erf(1))^2
+//   disk        the indicator of the disk of area 1/2 centred in the pixel
 //   light       irradiance at a point from a square light above it, side 1 at height
 //               1, radiance 1, by a point drawn uniformly on the light (next-event
 //               estimation, the light point's dimension): E = pi L F, F the form factor
@@ -73,10 +78,18 @@ struct SamplerStudy {
   std::vector<StudySlope> slopes;
 };
 
-// Every estimator with every sampler at every N, over `pixels` pixels (split among
-// `threads`, 0 = all cores; the same numbers for any count). Each N draws from its own
-// seed, so the points of the fit are independent. Throws std::invalid_argument for fewer
-// than 2 pixels or 2 sample counts, or a count of 0.
+// Every pixel's estimate of `estimator`, the mean of its N samples: a film of
+// `pixels` x 1 with the sequence `kind` (seed, N), N samples by render_pass's Random
+// pattern (its points the sequence's pixel dimension), on `threads` threads (0 = all
+// cores; the same numbers for any count). Throws std::invalid_argument for pixels
+// outside [1, 16384] or N = 0.
+std::vector<double> pixel_estimates(const Estimator& estimator, SamplerKind kind, std::uint64_t seed,
+                                    std::uint32_t samples, int pixels, int threads);
+
+// Every estimator with every sampler at every N, over `pixels` pixels (pixel_estimates).
+// Each N draws from its own seed, so the points of the fit are independent. Throws
+// std::invalid_argument for pixels outside [2, 16384], fewer than 2 sample counts, or a
+// count of 0.
 SamplerStudy sampler_study(const std::vector<Estimator>& estimators, const std::vector<SamplerKind>& samplers,
                            const StudySettings& settings, int threads);
 

@@ -6,7 +6,7 @@
 // standard error of about 0.01 and tested against bands 0.1 to 0.2 wide around the
 // theory, which a sampler whose stratification or scramble is broken falls out of
 // (independent samples give -1/2 everywhere, a shifted net -1 on smooth integrands).
-#include "gi/core/samplers/sampler_study.hpp"
+#include "gi/render/sampler_study.hpp"
 
 #include <gtest/gtest.h>
 
@@ -37,16 +37,9 @@ TEST(SamplerStudy, EveryEstimatorIsUnbiasedWithEverySampler) {
   for (const gi::Estimator& e : gi::study_estimators())
     for (SamplerKind kind : every_sampler)
       for (std::uint32_t n : {16u, 64u}) {
-        const gi::SampleSequence sampler = gi::make_sample_sequence(kind, 2718 + n, n);
-        std::vector<double> pixels;
-        for (int p = 0; p < 4000; ++p) {
-          double sum = 0;
-          for (std::uint32_t i = 0; i < n; ++i) sum += e.sample(gi::SampleStream(sampler, p, i));
-          pixels.push_back(sum / n);
-        }
-        const t::Estimate m = t::estimate(pixels);
+        const t::Estimate m = t::estimate(gi::pixel_estimates(e, kind, 2718 + n, n, 4000, 0));
         EXPECT_NEAR(m.mean, e.exact, 5 * m.standard_error)
-            << e.name << ", " << gi::sampler_name(kind) << ", " << n << " samples: standard error " << m.standard_error;
+            << e.name << ", " << gi::sequence_name(kind) << ", " << n << " samples: standard error " << m.standard_error;
       }
 }
 
@@ -58,7 +51,7 @@ TEST(SamplerStudy, ErrorFallsAtTheRateOfEachSampler) {
   ASSERT_EQ(study.slopes.size(), 12u);
   ASSERT_EQ(study.rows.size(), 60u);
   for (const gi::StudySlope& s : study.slopes) {
-    const std::string what = s.estimator + ", " + gi::sampler_name(s.sampler);
+    const std::string what = s.estimator + ", " + gi::sequence_name(s.sampler);
     EXPECT_LT(s.standard_error, 0.03) << what << ": too few pixels to tell the slopes apart";
     if (s.sampler == SamplerKind::Independent) {
       EXPECT_NEAR(s.slope, -0.5, 0.07) << what << ": independent samples converge as N^-1/2";
@@ -87,6 +80,8 @@ TEST(SamplerStudy, TheSameNumbersOnAnyNumberOfThreads) {
 TEST(SamplerStudy, RefusesWhatItCannotFit) {
   gi::StudySettings settings;
   settings.pixels = 1;
+  EXPECT_THROW(gi::sampler_study(gi::study_estimators(), every_sampler, settings, 1), std::invalid_argument);
+  settings.pixels = 16385;  // a film's width at most
   EXPECT_THROW(gi::sampler_study(gi::study_estimators(), every_sampler, settings, 1), std::invalid_argument);
   settings.pixels = 10;
   settings.sample_counts = {16};

@@ -1,10 +1,9 @@
-#include "gi/core/samplers/sampler_study.hpp"
+#include "gi/render/sampler_study.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "gi/core/parallel.hpp"
 #include "gi/core/sampling.hpp"
 #include "gi/core/samplers/seeds.hpp"
 
@@ -16,21 +15,24 @@ namespace {
 // point x = 0, whose normal is +z; it faces down, radiance 1.
 constexpr double light_side = 1, light_height = 1, light_radiance = 1;
 
-double smooth_bump(const SampleStream& stream) {
-  const vec2 u = stream.get_2d(pixel_dimension);
+// Where the sample's eye ray crosses its pixel, in the pixel's unit square.
+vec2 in_pixel(const PixelSample& sample) { return sample.position - vec2(sample.x, sample.y); }
+
+double smooth_bump(PixelSample& sample) {
+  const vec2 u = in_pixel(sample);
   return std::exp(-(u.x * u.x + u.y * u.y));
 }
 
-double disk_indicator(const SampleStream& stream) {
-  const vec2 u = stream.get_2d(pixel_dimension) - vec2(0.5);
+double disk_indicator(PixelSample& sample) {
+  const vec2 u = in_pixel(sample) - vec2(0.5);
   return u.x * u.x + u.y * u.y < 1 / (2 * pi) ? 1.0 : 0.0;  // area pi r^2 = 1/2
 }
 
 // E = integral over the light of L cos(theta_x) cos(theta_y) / d^2 dA, with y uniform on
 // the light (p_A = 1 / A): one sample is L cos(theta_x) cos(theta_y) / d^2 * A, and both
 // cosines are h / d here.
-double irradiance_by_light_point(const SampleStream& stream) {
-  const vec2 u = stream.get_2d(path_dimension(0, Decision::LightPoint));
+double irradiance_by_light_point(PixelSample& sample) {
+  const vec2 u = sample.get_2d(path_dimension(0, Decision::LightPoint));
   const vec3 y((u.x - 0.5) * light_side, (u.y - 0.5) * light_side, light_height);
   const double d2 = length_squared(y), cos_both = light_height * light_height / d2;
   return light_radiance * cos_both / d2 * (light_side * light_side);
@@ -38,15 +40,16 @@ double irradiance_by_light_point(const SampleStream& stream) {
 
 // E = integral over the hemisphere of L_i cos(theta) dw, with w drawn with p = cos(theta) / pi:
 // one sample is L_i cos(theta) / p = pi L_i, where the ray meets the light.
-double irradiance_by_cosine_direction(const SampleStream& stream) {
-  const vec3 w = sample_cosine_hemisphere(stream.get_2d(path_dimension(0, Decision::BsdfDirection)));
+double irradiance_by_cosine_direction(PixelSample& sample) {
+  const vec3 w = sample_cosine_hemisphere(sample.get_2d(path_dimension(0, Decision::BsdfDirection)));
   if (w.z <= 0) return 0;
   const double t = light_height / w.z, half = light_side / 2;
   return std::abs(t * w.x) < half && std::abs(t * w.y) < half ? pi * light_radiance : 0.0;
 }
 
 void check(const StudySettings& s) {
-  if (s.pixels < 2) throw std::invalid_argument("sampler study: at least 2 pixels, got " + std::to_string(s.pixels));
+  if (s.pixels < 2 || s.pixels > 16384)
+    throw std::invalid_argument("sampler study: pixels must lie in [2, 16384], got " + std::to_string(s.pixels));
   if (s.sample_counts.size() < 2) throw std::invalid_argument("sampler study: at least 2 sample counts to fit a slope");
   for (std::uint32_t n : s.sample_counts)
     if (n == 0) throw std::invalid_argument("sampler study: a sample count of 0");
@@ -103,6 +106,23 @@ Slope fit_log_log_slope(const std::vector<LogLogPoint>& points) {
   return {sxy / sxx, std::sqrt(variance) / sxx};
 }
 
+std::vector<double> pixel_estimates(const Estimator& estimator, SamplerKind kind, std::uint64_t seed,
+                                    std::uint32_t samples, int pixels, int threads) {
+  if (pixels < 1 || pixels > 16384)
+    throw std::invalid_argument("sampler study: pixels must lie in [1, 16384], got " + std::to_string(pixels));
+  Film film = make_film(pixels, 1, seed, kind, samples);
+  // The eye rays are not looked at: an estimator's decisions are its sample's numbers.
+  const auto radiance = [&](const Ray&, PixelSample& sample) { return Color(estimator.sample(sample)); };
+  // N samples in passes of side^2, side the largest that divides N and that a pass takes (64).
+  int side = 64;
+  while (samples % static_cast<std::uint32_t>(side * side) != 0) --side;
+  for (std::uint32_t done = 0; done < samples; done += side * side)
+    render_pass(film, Camera{}, {Sampler::Random, side}, radiance, threads);
+  std::vector<double> estimates;
+  for (const Color& sum : film.sum) estimates.push_back(sum.x / samples);
+  return estimates;
+}
+
 SamplerStudy sampler_study(const std::vector<Estimator>& estimators, const std::vector<SamplerKind>& samplers,
                            const StudySettings& settings, int threads) {
   check(settings);
@@ -111,14 +131,12 @@ SamplerStudy sampler_study(const std::vector<Estimator>& estimators, const std::
     for (const SamplerKind kind : samplers) {
       std::vector<LogLogPoint> points;
       for (const std::uint32_t n : settings.sample_counts) {
-        const SampleSequence sampler = make_sample_sequence(kind, child_seed(settings.seed, n), n);
-        std::vector<double> squared_error(settings.pixels);
-        parallel_for(settings.pixels, threads, [&](int pixel) {
-          double sum = 0;
-          for (std::uint32_t i = 0; i < n; ++i) sum += estimator.sample(SampleStream(sampler, pixel, i));
-          const double error = (sum / n - estimator.exact) / estimator.exact;
-          squared_error[pixel] = error * error;
-        });
+        std::vector<double> squared_error;
+        for (const double estimate : pixel_estimates(estimator, kind, child_seed(settings.seed, n), n, settings.pixels,
+                                                     threads)) {
+          const double error = (estimate - estimator.exact) / estimator.exact;
+          squared_error.push_back(error * error);
+        }
         // RMS = sqrt(mean e^2); its standard error from the spread of e^2 (the delta
         // method: se(sqrt m) = se(m) / (2 sqrt m)).
         double mean = 0, m2 = 0;
