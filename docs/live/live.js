@@ -134,8 +134,10 @@
     if (state.running) return;
     state.running = true;
     state.status = null;
+    for (const f of Object.values(state.files)) URL.revokeObjectURL(f.url);  // the last run's pictures
     state.files = {};
     state.lines = [];
+    for (const a of $('pages').querySelectorAll('a')) URL.revokeObjectURL(a.href);
     for (const id of ['outputs', 'tables', 'files', 'log', 'pages']) $(id).textContent = '';
     $('run').disabled = true;
     $('stop').disabled = false;
@@ -200,6 +202,7 @@
 
   function offerPages() {
     const links = $('pages');
+    for (const a of links.querySelectorAll('a')) URL.revokeObjectURL(a.href);  // the last run's pages
     links.textContent = '';
     const folder = 'out/' + GI_LIVE.lesson + '/';
     const offers = [['viewer.html', 'Open the interactive viewer', 'viewer-link'],
