@@ -46,7 +46,9 @@ def options_of(binary):
     found = []
     for line in text.splitlines():
         m = re.match(r"^  (--[a-z0-9-]+)( VALUE)?\s+(.*)$", line)
-        if not m or m.group(1) == "--help":
+        # --help and --options-json print and exit before any other option is read,
+        # once or twice: not options of the run to be attacked.
+        if not m or m.group(1) in ("--help", "--options-json"):
             continue
         name, takes, rest = m.group(1), m.group(2), m.group(3)
         r = re.search(r"range \[([^,]+), ([^\]]+)\]", rest)
