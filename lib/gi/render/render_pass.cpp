@@ -5,6 +5,7 @@
 
 #include "gi/core/parallel.hpp"
 #include "gi/render/adaptive.hpp"
+#include "gi/render/pattern_numbers.hpp"
 
 namespace gi {
 
@@ -32,6 +33,11 @@ vec2 PixelSample::get_2d(std::uint32_t dimension) {
     return {u, v};
   }
   return SampleStream(sequence, pixel, static_cast<std::uint32_t>(index)).get_2d(dimension);
+}
+
+PixelSample stream_sample(Rng& rng) {
+  static const SampleSequence independent{};
+  return {0, 0, {}, 0, rng, 0, independent, 0};
 }
 
 int samples_per_pass(const Sampling& s) {
@@ -76,19 +82,7 @@ void render_pass(Film& film, const Camera& camera, const Sampling& sampling, Rad
         }
         const std::vector<vec2>* positions = &fixed;
         if (sampling.sampler == Sampler::Random || sampling.sampler == Sampler::Jittered) {
-          // The pattern is drawn whole, then its rays traced.
-          if (sampling.sampler == Sampler::Random && film.sequence.kind != SamplerKind::Independent) {
-            // Each sample's point from the sequence's pixel dimension, spread across the pixel's samples.
-            drawn.clear();
-            for (long long k = 0; k < added; ++k)
-              drawn.push_back(
-                  SampleStream(film.sequence, i, static_cast<std::uint32_t>(first_index + k)).get_2d(pixel_dimension));
-          } else if (sampling.sampler == Sampler::Random) {
-            drawn.clear();
-            random_positions(sampling.n * sampling.n, sample.rng, drawn);
-          } else {
-            drawn = jittered_positions(sampling.n, sample.rng);
-          }
+          pattern_points(sampling, sample, drawn);  // drawn whole, then its rays traced
           positions = &drawn;
         }
         long long n = first;

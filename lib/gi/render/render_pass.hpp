@@ -41,6 +41,10 @@ struct PixelSample {
   vec2 get_2d(std::uint32_t dimension);
 };
 
+// A sample outside any film, for a caller that holds a stream alone (a test, a probe of
+// one ray): the independent sequence, whose numbers are `rng`'s in the order asked.
+PixelSample stream_sample(Rng& rng);
+
 // A radiance function, not owned: one indirect call per sample, and any callable will do
 // (a lambda, a method's struct). It must outlive the render_pass it is given to.
 class RadianceFunction {
@@ -61,9 +65,9 @@ class RadianceFunction {
 
 // Adds one pass of `sampling` to every pixel of `film`: the pattern's eye rays through the
 // camera (Centre 1, Grid, Random and Jittered n x n, Adaptive one estimate of the pixel from
-// its corners and splits), each estimated by `radiance`. With a stratified or Sobol'
-// sequence, Random's points are the sequence's pixel dimension (pixel_dimension). The film's count grows by the
-// pass's samples. The picture is cut into 32 x 32 tiles that `threads` (0 = all cores)
+// its corners and splits), each estimated by `radiance`. Random's and Jittered's points
+// read the sequence's pixel dimension (pattern_numbers.hpp). The film's count grows by
+// the pass's samples. The picture is cut into 32 x 32 tiles that `threads` (0 = all cores)
 // take in turn; a pixel draws only from its own stream, so the film is the same for any
 // thread count. Throws std::invalid_argument for bad sampling or camera settings.
 void render_pass(Film& film, const Camera& camera, const Sampling& sampling, RadianceFunction radiance, int threads);
