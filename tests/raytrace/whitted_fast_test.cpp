@@ -32,8 +32,10 @@ void expect_same_local_light(const std::string& scene_name, std::uint64_t seed) 
     const gi::vec3 n = gi::dot(ray.direction, hit->normal) < 0 ? hit->normal : -hit->normal;
     gi::RayCounts plain_counts, fast_counts;
     gi::Rng plain_rng(seed, i), fast_rng(seed, i);
-    const gi::Color plain = gi::shade_locally(world, *hit, n, -ray.direction, settings, plain_counts, plain_rng, 1);
-    const gi::Color fast = gi::shade_locally_fast(world, *hit, n, -ray.direction, settings, fast_counts, fast_rng, 1);
+    gi::PixelSample plain_sample = gi::stream_sample(plain_rng), fast_sample = gi::stream_sample(fast_rng);
+    const gi::Color plain = gi::shade_locally(world, *hit, n, -ray.direction, settings, plain_counts, plain_sample, 1);
+    const gi::Color fast =
+        gi::shade_locally_fast(world, *hit, n, -ray.direction, settings, fast_counts, fast_sample, 1);
     EXPECT_TRUE(same_bits(fast, plain)) << scene_name << ", ray " << i;
     EXPECT_EQ(fast_counts.at, plain_counts.at) << scene_name << ", ray " << i;
     EXPECT_EQ(fast_rng.uniform(), plain_rng.uniform()) << scene_name << ", ray " << i;

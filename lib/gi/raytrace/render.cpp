@@ -35,7 +35,7 @@ RenderResult render(const World& world, const RenderSettings& settings, Film& fi
     ++result.samples[static_cast<std::size_t>(sample.y) * settings.width + sample.x];
     RayCounts& counts = tile_counts[sample.task];
     counts.count(RayKind::Primary, 0);
-    return trace(world, eye, settings.trace, counts, sample.rng);
+    return trace(world, eye, settings.trace, counts, sample);
   };
   const Timer timer;
   render_pass(film, world.scene.camera, settings.sampling, whitted, threads);

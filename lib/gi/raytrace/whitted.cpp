@@ -1,6 +1,7 @@
 #include "gi/raytrace/whitted.hpp"
 
 #include "gi/accel/world_fast.hpp"
+#include "gi/raytrace/light_sample_numbers.hpp"
 #include "gi/raytrace/optics.hpp"
 #include "gi/raytrace/shading.hpp"
 #include "gi/raytrace/whitted_fast.hpp"
@@ -9,7 +10,7 @@ namespace gi {
 
 // Local illumination: ambient plus the Phong term of every light the shadow rays reach.
 Color shade_locally(const World& world, const Hit& hit, const vec3& n, const vec3& to_eye,
-                    const TraceSettings& settings, RayCounts& counts, Rng& rng, int depth) {
+                    const TraceSettings& settings, RayCounts& counts, PixelSample& sample, int depth) {
   const Material& material = world.scene.materials[hit.material];
   const Color kd = diffuse_at(material, hit.point);
   Color colour = material.emission + material.ambient * kd * world.scene.ambient_light;
@@ -21,7 +22,9 @@ Color shade_locally(const World& world, const Hit& hit, const vec3& n, const vec
     counts.count(RayKind::Shadow, depth);
     if (!any_hit(world, shadow)) colour += phong(material, kd, n, l, to_eye, light.intensity);
   }
-  for (const QuadLight& light : world.scene.area_lights) {
+  const std::vector<QuadLight>& area_lights = world.scene.area_lights;
+  for (std::size_t l = 0; l < area_lights.size(); ++l) {
+    const QuadLight& light = area_lights[l];
     const auto reaches = [&](const vec3& y) {  // S(x, y): does the shadow ray get to y?
       const Ray shadow = shadow_ray(hit.point, n, y, epsilon);
       if (dot(n, shadow.direction) <= 0) return false;  // y is behind the surface
@@ -31,13 +34,21 @@ Color shade_locally(const World& world, const Hit& hit, const vec3& n, const vec
     const auto point_light_at = [&](const vec3& y) {
       return phong(material, kd, n, normalize(y - hit.point), to_eye, light.intensity);
     };
-    colour += soft_shadow_estimate(light, light_samples(settings.soft_shadows, rng), reaches, point_light_at);
+    const std::uint32_t dimension = shadow_dimension(depth, int(l), int(area_lights.size()));
+    colour += soft_shadow_estimate(light, light_samples(settings.soft_shadows, sample, dimension), reaches,
+                                   point_light_at);
   }
   return colour;
 }
 
 Color trace(const World& world, const Ray& ray, const TraceSettings& settings, RayCounts& counts, Rng& rng,
             int depth, const Color& contribution) {
+  PixelSample sample = stream_sample(rng);
+  return trace(world, ray, settings, counts, sample, depth, contribution);
+}
+
+Color trace(const World& world, const Ray& ray, const TraceSettings& settings, RayCounts& counts,
+            PixelSample& sample, int depth, const Color& contribution) {
   // The nearest hit and the local term, or the same by the tuned code of the *_fast files.
   const std::optional<Hit> hit = settings.fast_queries ? closest_hit_fast(world, ray) : closest_hit(world, ray);
   if (!hit) return world.scene.background;
@@ -45,8 +56,9 @@ Color trace(const World& world, const Ray& ray, const TraceSettings& settings, R
   const Material& material = world.scene.materials[hit->material];
   const bool entering = dot(ray.direction, hit->normal) < 0;
   const vec3 n = entering ? hit->normal : -hit->normal;  // the normal on the ray's side
-  Color colour = settings.fast_queries ? shade_locally_fast(world, *hit, n, -ray.direction, settings, counts, rng, depth)
-                                       : shade_locally(world, *hit, n, -ray.direction, settings, counts, rng, depth);
+  const vec3 to_eye = -ray.direction;
+  Color colour = settings.fast_queries ? shade_locally_fast(world, *hit, n, to_eye, settings, counts, sample, depth)
+                                       : shade_locally(world, *hit, n, to_eye, settings, counts, sample, depth);
   if (depth >= settings.max_depth) return colour;
 
   // How much reflected and transmitted light reaches this point's colour.
@@ -72,12 +84,12 @@ Color trace(const World& world, const Ray& ray, const TraceSettings& settings, R
   if (worth_tracing(k_r)) {
     counts.count(RayKind::Reflected, depth + 1);
     const Ray reflected{hit->point + epsilon * n, reflect(ray.direction, n)};
-    colour += k_r * trace(world, reflected, settings, counts, rng, depth + 1, contribution * k_r);
+    colour += k_r * trace(world, reflected, settings, counts, sample, depth + 1, contribution * k_r);
   }
   if (transmitted && worth_tracing(k_t)) {
     counts.count(RayKind::Transmitted, depth + 1);
     const Ray refracted{hit->point - epsilon * n, normalize(*transmitted)};
-    colour += k_t * trace(world, refracted, settings, counts, rng, depth + 1, contribution * k_t);
+    colour += k_t * trace(world, refracted, settings, counts, sample, depth + 1, contribution * k_t);
   }
   return colour;
 }

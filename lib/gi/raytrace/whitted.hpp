@@ -3,6 +3,7 @@
 #include "gi/core/rng.hpp"
 #include "gi/raytrace/ray_counts.hpp"
 #include "gi/raytrace/soft_shadows.hpp"
+#include "gi/render/render_pass.hpp"
 #include "gi/accel/world.hpp"
 
 namespace gi {
@@ -25,15 +26,18 @@ struct TraceSettings {
 // Whitted's recursive ray tracer. Returns the radiance seen along `ray`:
 //   I = k_a I_a + sum_l S_l I_l [k_d N.L + k_s (R.V)^n] + k_r I_r + k_t I_t
 // `depth` is the number of reflections/refractions that led to this ray and
-// `contribution` how much of it reaches the pixel. Counts every ray it casts; `rng`
-// places the shadow rays on area lights.
+// `contribution` how much of it reaches the pixel. Counts every ray it casts; the shadow
+// rays' points on area lights read `sample`'s numbers (light_sample_numbers.hpp).
+Color trace(const World& world, const Ray& ray, const TraceSettings& settings, RayCounts& counts,
+            PixelSample& sample, int depth = 0, const Color& contribution = Color(1.0));
+// The same with the independent numbers of `rng` alone (stream_sample).
 Color trace(const World& world, const Ray& ray, const TraceSettings& settings, RayCounts& counts, Rng& rng,
             int depth = 0, const Color& contribution = Color(1.0));
 
 // trace()'s local term at `hit`, seen from `to_eye`, with `n` the normal on the viewer's
 // side: emission + k_a I_a + sum_l S_l I_l [k_d N.L + k_s (R.V)^n], each S_l a shadow ray
-// (counted at `depth`), area lights sampled with `rng`.
+// (counted at `depth`), area lights sampled with `sample`'s numbers.
 Color shade_locally(const World& world, const Hit& hit, const vec3& n, const vec3& to_eye,
-                    const TraceSettings& settings, RayCounts& counts, Rng& rng, int depth);
+                    const TraceSettings& settings, RayCounts& counts, PixelSample& sample, int depth);
 
 }  // namespace gi

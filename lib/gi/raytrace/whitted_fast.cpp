@@ -1,6 +1,7 @@
 #include "gi/raytrace/whitted_fast.hpp"
 
 #include "gi/accel/world_fast.hpp"
+#include "gi/raytrace/light_sample_numbers.hpp"
 #include "gi/raytrace/shading.hpp"
 
 namespace gi {
@@ -26,7 +27,7 @@ vec3 read_double_by_double(const vec3& v) {
 // would stall as read_double_by_double explains).
 [[gnu::noinline, gnu::flatten]] Color shade_locally_fast(const World& world, const Hit& hit, const vec3& n,
                                                          const vec3& to_eye, const TraceSettings& settings,
-                                                         RayCounts& counts, Rng& rng, int depth) {
+                                                         RayCounts& counts, PixelSample& sample, int depth) {
   const vec3 point = read_double_by_double(hit.point);
   const Material& material = world.scene.materials[hit.material];
   const Color kd = diffuse_at(material, point);
@@ -46,7 +47,9 @@ vec3 read_double_by_double(const vec3& v) {
     counts.count(RayKind::Shadow, depth);
     if (!any_hit_fast(world, shadow)) colour += phong(material, kd, n, l, to_eye, lights[i].intensity);
   }
-  for (const QuadLight& light : world.scene.area_lights) {
+  const std::vector<QuadLight>& area_lights = world.scene.area_lights;
+  for (std::size_t l = 0; l < area_lights.size(); ++l) {
+    const QuadLight& light = area_lights[l];
     const auto reaches = [&](const vec3& y) {  // S(x, y): does the shadow ray get to y?
       const Ray shadow = shadow_ray(point, n, y, epsilon);
       if (dot(n, shadow.direction) <= 0) return false;  // y is behind the surface
@@ -56,7 +59,9 @@ vec3 read_double_by_double(const vec3& v) {
     const auto point_light_at = [&](const vec3& y) {
       return phong(material, kd, n, normalize(y - point), to_eye, light.intensity);
     };
-    colour += soft_shadow_estimate(light, light_samples(settings.soft_shadows, rng), reaches, point_light_at);
+    const std::uint32_t dimension = shadow_dimension(depth, int(l), int(area_lights.size()));
+    colour += soft_shadow_estimate(light, light_samples(settings.soft_shadows, sample, dimension), reaches,
+                                   point_light_at);
   }
   return colour;
 }

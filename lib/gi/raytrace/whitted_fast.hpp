@@ -7,6 +7,6 @@ namespace gi {
 // same operations in the same order, so the same colour to the bit and the same counts
 // (tests/raytrace/whitted_fast_test.cpp); whitted_fast.cpp says what differs and why.
 Color shade_locally_fast(const World& world, const Hit& hit, const vec3& n, const vec3& to_eye,
-                         const TraceSettings& settings, RayCounts& counts, Rng& rng, int depth);
+                         const TraceSettings& settings, RayCounts& counts, PixelSample& sample, int depth);
 
 }  // namespace gi
