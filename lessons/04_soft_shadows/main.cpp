@@ -1,6 +1,7 @@
 // Lesson 04 -- soft shadows: an area light sampled by jittered (or random) shadow
 // rays. The penumbra grows with the light as similar triangles predict; the noise
-// falls with the number of shadow rays, faster when they are jittered.
+// falls with the number of shadow rays, faster when they are jittered, and faster
+// again when the numbers they read are stratified or Sobol' (step 3, sequences.cpp).
 #include <algorithm>
 #include <functional>
 #include <optional>
@@ -19,8 +20,16 @@
 #include "gi/scene/builtin_scenes.hpp"
 #include "gi/scene/scene_file.hpp"
 #include "gi/scene/soft_shadow_scene.hpp"
+#include "sequences.hpp"
 
 namespace {
+
+// A picture on a film of its own, whose samples read `sequence`'s numbers.
+gi::RenderResult render_with(const gi::World& world, const gi::RenderSettings& settings, gi::SamplerKind sequence,
+                             const gi::Lesson& lesson) {
+  gi::Film film = gi::make_film(settings.width, settings.height, lesson.seed(), sequence);
+  return gi::render(world, settings, film, lesson.threads());
+}
 
 // The part of the area light seen from the floor point (x, 0, 0), by 32 x 32
 // jittered shadow rays.
@@ -48,7 +57,7 @@ double measured_penumbra(const gi::World& world, gi::Rng& rng) {
 
 // 1. The penumbra against the light's size, measured on the floor of the built-in
 // scene and rendered.
-gi::Table penumbra_study(gi::RenderSettings settings, const std::string& accel, gi::Rng& rng,
+gi::Table penumbra_study(gi::RenderSettings settings, gi::SamplerKind sequence, const std::string& accel, gi::Rng& rng,
                          const std::function<gi::View(const gi::World&, const gi::RenderSettings&)>& view,
                          gi::Lesson& lesson) {
   gi::Table penumbra("Penumbra of the box's edge against light size (similar triangles: w = s h / (H - h))",
@@ -59,7 +68,7 @@ gi::Table penumbra_study(gi::RenderSettings settings, const std::string& accel, 
     const double predicted = s * gi::soft_shadow_box_height / (gi::soft_shadow_light_height - gi::soft_shadow_box_height);
     settings.trace.soft_shadows = {gi::LightSampling::Jittered, 8};
     penumbra.add_row({s, predicted, measured_penumbra(lit, rng), s == 0 ? 1 : 64});
-    strip.push_back(gi::render(lit, settings, lesson.seed(), lesson.threads()).image);
+    strip.push_back(render_with(lit, settings, sequence, lesson).image);
     const std::string size = gi::format_number(s, 2, gi::Format::Fixed);
     lesson.picture(strip.back(), "light_size_" + size, "light of side " + size, view(lit, settings));
   }
@@ -79,6 +88,7 @@ int main(int argc, char** argv) {
   settings.trace.max_depth = 1;
   double light_size = 1.0;
   int reference_n = 24;
+  std::string sequence_option = "independent";
   std::string scene_name = "soft";  // its scene is made for the penumbra's measurement
   gi::Scene scene;
   lesson.add_image_size(settings.width, settings.height);
@@ -91,9 +101,12 @@ int main(int argc, char** argv) {
   });
   lesson.options()
       .add("--light-size", light_size, "side of the square area light of the scene soft (scene units)", 0.05, 4.0)
-      .add("--reference-n", reference_n, "reference: jittered n x n shadow rays per hit", 4, 64);
+      .add("--reference-n", reference_n, "reference: jittered n x n shadow rays per hit", 4, 64)
+      .add("--sampler", sequence_option, "the numbers the pictures' shadow rays read (step 3 compares all three)",
+           gi::sequence_option_names());
   return lesson.run(argc, argv, [&] {
     gi::Rng rng(lesson.seed(), 7);
+    const gi::SamplerKind sequence = gi::sequence_from_name(sequence_option);
     const auto view = [&](const gi::World& world, const gi::RenderSettings& s) {
       return gi::View{world.scene.camera, s.width, s.height,
                       gi::describe_pixel_samples(s.sampling) + "; " + std::to_string(s.trace.soft_shadows.n) + " x " +
@@ -104,7 +117,7 @@ int main(int argc, char** argv) {
     // The penumbra is measured on the built-in scene's floor, where its size is known.
     const bool built_in = scene_name == "soft";
     std::optional<gi::Table> penumbra;
-    if (built_in) penumbra = penumbra_study(settings, accel, rng, view, lesson);
+    if (built_in) penumbra = penumbra_study(settings, sequence, accel, rng, view, lesson);
 
     // 2. Shadow rays per hit against noise and time, for one light size.
     const gi::World world = gi::make_world(scene, gi::acceleration_from_name(accel));
@@ -140,7 +153,7 @@ int main(int argc, char** argv) {
     gi::Progress progress("rendering", static_cast<long long>(runs.size()));
     for (const gi::SoftShadowSettings& run : runs) {
       settings.trace.soft_shadows = run;
-      const gi::RenderResult r = gi::render(world, settings, lesson.seed(), lesson.threads());
+      const gi::RenderResult r = render_with(world, settings, sequence, lesson);
       progress.advance();
       const std::string name = gi::light_sampling_name(run.sampling);
       const double error = gi::rmse(r.image, reference);
@@ -171,6 +184,9 @@ int main(int argc, char** argv) {
     lesson.chart({"Soft shadows: error against time", "render time (ms)", "RMSE against the reference", true, true,
                   curves},
                  "error_vs_time");
+
+    // 3. The same random shadow rays reading three number sequences, in the penumbra.
+    lesson04::sequences(world, settings, reference, lesson);
     lesson.say("\nimages and charts: " + lesson.out().string() + "/ (shadow_crops.png: hard, random 1, random 16, " +
                "jittered 1, jittered 16, reference)");
   });
