@@ -41,12 +41,6 @@ Color shade_locally(const World& world, const Hit& hit, const vec3& n, const vec
   return colour;
 }
 
-Color trace(const World& world, const Ray& ray, const TraceSettings& settings, RayCounts& counts, Rng& rng,
-            int depth, const Color& contribution) {
-  PixelSample sample = stream_sample(rng);
-  return trace(world, ray, settings, counts, sample, depth, contribution);
-}
-
 Color trace(const World& world, const Ray& ray, const TraceSettings& settings, RayCounts& counts,
             PixelSample& sample, int depth, const Color& contribution) {
   // The nearest hit and the local term, or the same by the tuned code of the *_fast files.
@@ -92,6 +86,12 @@ Color trace(const World& world, const Ray& ray, const TraceSettings& settings, R
     colour += k_t * trace(world, refracted, settings, counts, sample, depth + 1, contribution * k_t);
   }
   return colour;
+}
+
+Color trace(const World& world, const Ray& ray, const TraceSettings& settings, RayCounts& counts, Rng& rng,
+            int depth, const Color& contribution) {
+  PixelSample sample = stream_sample(rng);
+  return trace(world, ray, settings, counts, sample, depth, contribution);
 }
 
 }  // namespace gi
