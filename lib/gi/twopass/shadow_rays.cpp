@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "gi/radiosity/mesh/polygon.hpp"
+#include "gi/raytrace/light_sample_numbers.hpp"
 
 namespace gi {
 
@@ -14,14 +15,20 @@ ShadowRayLights shadow_ray_lights(const Mesh& mesh, int cells) {
   return lights;
 }
 
-Color irradiance_by_shadow_rays(const EyeWorld& eye, const ShadowRayLights& lights, const vec3& x, const vec3& n,
-                                Rng& rng) {
+namespace {
+
+// H(x), with points(l) the cells^2 points of light l in its (s, t) square, the k-th in
+// stratum k. A light's points are drawn whole before its rays: tracing draws nothing.
+template <class Points>
+Color irradiance(const EyeWorld& eye, const ShadowRayLights& lights, const vec3& x, const vec3& n, Points&& points) {
   Color H(0.0);
   const int m = lights.cells;
-  for (const Surface& light : lights.lights) {
+  for (std::size_t l = 0; l < lights.lights.size(); ++l) {
+    const Surface& light = lights.lights[l];
     const auto& c = light.corners;
+    const std::vector<vec2> st = points(l);
     for (int k = 0; k < m * m; ++k) {
-      const double s = (k % m + rng.uniform()) / m, t = (k / m + rng.uniform()) / m;
+      const double s = st[k].x, t = st[k].y;
       const vec3 y = bilinear(c, s, t);
       // The bilinear map's area element dA = |dy/ds x dy/dt| ds dt; the stratum has ds dt = 1 / m^2.
       const vec3 ds = (1 - t) * (c[1] - c[0]) + t * (c[2] - c[3]);
@@ -36,6 +43,29 @@ Color irradiance_by_shadow_rays(const EyeWorld& eye, const ShadowRayLights& ligh
     }
   }
   return H;
+}
+
+}  // namespace
+
+Color irradiance_by_shadow_rays(const EyeWorld& eye, const ShadowRayLights& lights, const vec3& x, const vec3& n,
+                                Rng& rng) {
+  const int m = lights.cells;
+  return irradiance(eye, lights, x, n, [&](std::size_t) {
+    std::vector<vec2> st;
+    for (int k = 0; k < m * m; ++k) {
+      const double s = (k % m + rng.uniform()) / m, t = (k / m + rng.uniform()) / m;
+      st.emplace_back(s, t);
+    }
+    return st;
+  });
+}
+
+Color irradiance_by_shadow_rays(const EyeWorld& eye, const ShadowRayLights& lights, const vec3& x, const vec3& n,
+                                PixelSample& sample, int depth) {
+  const int count = static_cast<int>(lights.lights.size());
+  return irradiance(eye, lights, x, n, [&](std::size_t l) {
+    return light_samples({LightSampling::Jittered, lights.cells}, sample, shadow_dimension(depth, int(l), count));
+  });
 }
 
 }  // namespace gi

@@ -2,6 +2,7 @@
 #include <vector>
 
 #include "gi/core/rng.hpp"
+#include "gi/render/render_pass.hpp"
 #include "gi/twopass/eye_world.hpp"
 
 namespace gi {
@@ -26,5 +27,11 @@ ShadowRayLights shadow_ray_lights(const Mesh& mesh, int cells);
 // H(x) by cells^2 shadow rays per light, drawn from rng.
 Color irradiance_by_shadow_rays(const EyeWorld& eye, const ShadowRayLights& lights, const vec3& x, const vec3& n,
                                 Rng& rng);
+// The same with the points read from `sample`'s numbers: light l's cells^2 points are one
+// set of the film's sequence at dimension shadow_dimension(depth, l, lights), offsets in
+// the cells as Whitted's jittered shadow rays take them (raytrace/light_sample_numbers.hpp).
+// With independent numbers they are the pixel's stream drawn as above, to the byte.
+Color irradiance_by_shadow_rays(const EyeWorld& eye, const ShadowRayLights& lights, const vec3& x, const vec3& n,
+                                PixelSample& sample, int depth);
 
 }  // namespace gi

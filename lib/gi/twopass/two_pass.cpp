@@ -50,39 +50,40 @@ EyePass::EyePass(const TwoPassScene& scene, const RadiosityHandoff& handoff, con
 }
 
 // The radiance arriving along `ray`, after `depth` specular bounces.
-Color EyePass::radiance(const Ray& ray, int depth, Rng& rng) const {
+Color EyePass::radiance(const Ray& ray, int depth, PixelSample& sample) const {
   const auto hit = first_hit(eye_, ray);
   if (!hit) return Color(0.0);
-  if (hit->element < 0) return specular(ray, *hit, depth, rng);
+  if (hit->element < 0) return specular(ray, *hit, depth, sample);
   if (dot(ray.direction, hit->hit.normal) >= 0) return Color(0.0);  // the back of a surface
   const Element& e = handoff_.mesh.elements[hit->element];
   const Color rho = handoff_.mesh.reflectance(e), E = handoff_.mesh.emission(e);
   const vec3& n = e.shape.normal;
   const vec3 x = hit->hit.point + 1e-7 * length(e.shape.corners[2] - e.shape.corners[0]) * n;
-  const Color H = irradiance_by_shadow_rays(eye_, lights_, x, n, rng);
+  const Color H = irradiance_by_shadow_rays(eye_, lights_, x, n, sample, depth);
   Color L = (E + rho * H) / pi;
   switch (settings_.indirect) {
     case IndirectLight::Ambient: return L + rho * ambient_ / pi;
     case IndirectLight::Mesh: return L + indirect_radiosity_at(handoff_, hit->element, hit->hit.point) / pi;
     case IndirectLight::FinalGather:
-      return L + rho * final_gather(eye_, handoff_, x, n, settings_.gather_strata, rng) / pi;
+      return L + rho * final_gather(eye_, handoff_, x, n, settings_.gather_strata, sample.rng) / pi;
   }
   return L;
 }
 
 // Mirror and glass: the light of the one or two rays they send on (specular.hpp).
-Color EyePass::specular(const Ray& ray, const EyeHit& hit, int depth, Rng& rng) const {
+Color EyePass::specular(const Ray& ray, const EyeHit& hit, int depth, PixelSample& sample) const {
   if (depth >= settings_.max_depth) return Color(0.0);
   const SpecularRays next = specular_rays(eye_.world.scene.materials[hit.hit.material], ray, hit.hit, eye_.world.scale);
   Color L(0.0);
-  for (int i = 0; i < next.count; ++i) L += next.rays[i].weight * radiance(next.rays[i].ray, depth + 1, rng);
+  for (int i = 0; i < next.count; ++i) L += next.rays[i].weight * radiance(next.rays[i].ray, depth + 1, sample);
   return L;
 }
 
 Image render_two_pass(const TwoPassScene& scene, const RadiosityHandoff& handoff, const TwoPassSettings& settings,
                       std::uint64_t seed, int threads) {
   const EyePass eye(scene, handoff, settings);
-  Film film = make_film(settings.width, settings.height, seed);
+  const auto eye_rays = static_cast<std::uint32_t>(settings.samples * settings.samples);
+  Film film = make_film(settings.width, settings.height, seed, settings.sequence, eye_rays);
   render_pass(film, scene.camera, {Sampler::Jittered, settings.samples}, eye, threads);
   return film_mean(film);
 }

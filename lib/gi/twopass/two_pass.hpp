@@ -39,6 +39,10 @@ struct TwoPassSettings {
   int light_cells = 2;     // cells^2 shadow rays per light at every diffuse hit (1..64)
   int gather_strata = 6;   // FinalGather: strata^2 rays at every diffuse hit (1..64)
   int max_depth = 8;       // specular bounces (0..64)
+  // The numbers the eye rays' points in the pixel and the shadow rays' points on the
+  // lights read (sample_stream.hpp); the final gather draws from the pixel's stream,
+  // as exercise 16.2 draws it, whatever the sequence.
+  SamplerKind sequence = SamplerKind::Independent;
 };
 void check(const TwoPassSettings& settings);  // throws std::invalid_argument
 
@@ -46,16 +50,17 @@ void check(const TwoPassSettings& settings);  // throws std::invalid_argument
 Color ambient_irradiance(const Mesh& mesh);
 
 // The eye pass as a radiance function (render_pass.hpp): the radiance arriving along an
-// eye ray, by the rules above; its shadow rays and gather rays draw from the pixel's
-// stream. The hand-off must be of `scene`'s surfaces, and outlive it.
+// eye ray, by the rules above; its shadow rays read the sample's numbers, at a dimension
+// per specular depth and light, and its gather rays draw from the pixel's stream. The
+// hand-off must be of `scene`'s surfaces, and outlive it.
 class EyePass {
  public:
   EyePass(const TwoPassScene& scene, const RadiosityHandoff& handoff, const TwoPassSettings& settings);
-  Color operator()(const Ray& ray, PixelSample& sample) const { return radiance(ray, 0, sample.rng); }
+  Color operator()(const Ray& ray, PixelSample& sample) const { return radiance(ray, 0, sample); }
 
  private:
-  Color radiance(const Ray& ray, int depth, Rng& rng) const;
-  Color specular(const Ray& ray, const EyeHit& hit, int depth, Rng& rng) const;
+  Color radiance(const Ray& ray, int depth, PixelSample& sample) const;
+  Color specular(const Ray& ray, const EyeHit& hit, int depth, PixelSample& sample) const;
 
   const RadiosityHandoff& handoff_;
   TwoPassSettings settings_;
@@ -65,7 +70,8 @@ class EyePass {
 };
 
 // The picture, linear radiance per pixel: the eye pass through every pixel, pixel i
-// drawing from stream i of `seed`, on `threads` threads (the same bytes for any count).
+// reading the numbers of pixel i of `seed` in settings.sequence, on `threads` threads
+// (the same bytes for any count).
 Image render_two_pass(const TwoPassScene& scene, const RadiosityHandoff& handoff, const TwoPassSettings& settings,
                       std::uint64_t seed, int threads);
 
