@@ -104,3 +104,17 @@ TEST(TwoPass, IndependentNumbersGiveThePictureMadeBefore) {
   const char* bytes = reinterpret_cast<const char*>(picture.pixels.data());
   EXPECT_EQ(gi::hex(gi::fnv1a({bytes, picture.pixels.size() * sizeof(gi::Pixel)})), "94de07a98578a743");
 }
+
+TEST(TwoPass, StratifiedAndSobolGiveTheSameBytesOnOneAndThreeThreads) {
+  const gi::TwoPassScene scene = gi::make_two_pass_scene("cornell-spheres");
+  gi::RadiosityPassSettings p = small_pass(200);
+  p.tolerance = 1e-3;
+  const gi::RadiosityPass pass = gi::radiosity_pass(scene, p, 2);
+  for (const gi::SamplerKind kind : {gi::SamplerKind::Stratified, gi::SamplerKind::Sobol}) {
+    gi::TwoPassSettings s;
+    s.width = s.height = 20, s.gather_strata = 2, s.sequence = kind;
+    const gi::Image a = gi::render_two_pass(scene, pass.handoff, s, 1, 1);
+    const gi::Image b = gi::render_two_pass(scene, pass.handoff, s, 1, 3);
+    EXPECT_EQ(a.pixels, b.pixels) << gi::sequence_name(kind);
+  }
+}
