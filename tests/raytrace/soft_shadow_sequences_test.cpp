@@ -68,7 +68,7 @@ TEST(SoftShadowSequences, AHitsShadowRaysAreOneSpreadSet) {
     const gi::SampleSequence sequence = gi::make_sample_sequence(kind, 7, 1);
     gi::Rng rng;
     for (long long index : {0, 1, 5}) {
-      gi::PixelSample sample{0, 0, {}, index, rng, 0, sequence, 42};
+      gi::PixelSample sample{0, 0, {}, index, rng, sequence, 42};
       const std::vector<vec2> uv =
           gi::light_samples({gi::LightSampling::Random, 4}, sample, gi::shadow_dimension(0, 0, 1));
       ASSERT_EQ(uv.size(), 16u);
@@ -91,7 +91,7 @@ double visible_fraction(const gi::World& world, SamplerKind kind, std::uint64_t 
   const gi::vec3 point(x_c + 0.05, 0, 0), up(0, 1, 0);
   const gi::SampleSequence sequence = gi::make_sample_sequence(kind, 3, 1);
   gi::Rng rng(3, pixel);
-  gi::PixelSample sample{0, 0, {}, 0, rng, 0, sequence, pixel};
+  gi::PixelSample sample{0, 0, {}, 0, rng, sequence, pixel};
   const auto uv = gi::light_samples({gi::LightSampling::Random, 4}, sample, gi::shadow_dimension(0, 0, 1));
   const auto reaches = [&](const gi::vec3& y) { return gi::visible(world, point, up, y, 1e-6); };
   const auto one = [](const gi::vec3&) { return gi::Color(1.0); };

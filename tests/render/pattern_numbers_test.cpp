@@ -71,7 +71,7 @@ TEST(PatternNumbers, JitteredKeepsItsCellsAndReadsThePixelDimension) {
   for (const SamplerKind kind : {SamplerKind::Stratified, SamplerKind::Sobol}) {
     const gi::SampleSequence sequence = gi::make_sample_sequence(kind, 3, 16);
     gi::Rng rng;
-    gi::PixelSample sample{0, 0, {}, 16, rng, 0, sequence, 5};
+    gi::PixelSample sample{0, 0, {}, 16, rng, sequence, 5};
     std::vector<vec2> points;
     gi::pattern_points({gi::Sampler::Jittered, 4}, sample, points);
     ASSERT_EQ(points.size(), 16u);

@@ -33,14 +33,13 @@ TEST(RenderPass, EverySamplerAveragesOverThePixel) {
   EXPECT_FLOAT_EQ(pixel_value({gi::Sampler::Adaptive, 1, 0.1, 2}, 1), 12.5f);  // the corners' mean: exact
 }
 
-TEST(RenderPass, EachSampleKnowsItsPixelItsNumberAndItsTile) {
+TEST(RenderPass, EachSampleKnowsItsPixelAndItsNumber) {
   gi::Film film = gi::make_film(40, 35, 1);  // two tiles across, two down
   std::vector<std::vector<long long>> indices(40 * 35);
   int bad = 0;
   const auto record = [&](const gi::Ray&, gi::PixelSample& s) {
     indices[s.y * 40 + s.x].push_back(s.index);
-    const int tile = (s.y / 32) * 2 + s.x / 32;
-    bad += s.task != tile || s.position.x < s.x || s.position.x >= s.x + 1 || s.position.y < s.y ||
+    bad += s.position.x < s.x || s.position.x >= s.x + 1 || s.position.y < s.y ||
            s.position.y >= s.y + 1;
     return Color(0.0);
   };

@@ -96,7 +96,7 @@ TEST(ShadowRays, EverySequenceIsUnbiasedInThePenumbraAndTheSpreadOnesLessNoisy) 
     std::vector<double> estimates;
     for (std::uint64_t pixel = 0; pixel < 40000; ++pixel) {
       gi::Rng rng(5, pixel);
-      gi::PixelSample sample{0, 0, {}, 0, rng, 0, sequence, pixel};
+      gi::PixelSample sample{0, 0, {}, 0, rng, sequence, pixel};
       estimates.push_back(gi::irradiance_by_shadow_rays(eye, lights, corner, down, sample, 0).x);
     }
     const gi::testing::Estimate e = gi::testing::estimate(estimates);

@@ -10,9 +10,9 @@ inline constexpr int ray_kind_count = 4;
 inline constexpr const char* ray_kind_names[ray_kind_count] = {"primary", "shadow", "reflected", "transmitted"};
 
 // How many rays of each kind were cast at each depth (depth 0 = the eye ray and the
-// shadow rays from its hit). Each render task counts into its own RayCounts and the
-// counts are added afterwards, so the totals do not depend on the thread count.
-// Aligned to a cache line: neighbouring tiles' counts sit side by side in memory, and
+// shadow rays from its hit). Each thread counts into its own RayCounts (PerThread) and
+// the counts are added afterwards, so the totals do not depend on the thread count.
+// Aligned to a cache line: neighbouring threads' counts sit side by side in memory, and
 // two threads incrementing counters in one line would keep stealing it from each
 // other (false sharing) -- when a busy counter sat at the end of this struct, that
 // alone cost a quarter of the second core (docs/05_acceleration.md).

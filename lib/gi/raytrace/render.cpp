@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "gi/core/per_thread.hpp"
 #include "gi/core/timer.hpp"
 #include "gi/render/render_pass.hpp"
 
@@ -28,19 +29,19 @@ RenderResult render(const World& world, const RenderSettings& settings, Film& fi
     throw std::invalid_argument("render: the film is not the settings' size");
   RenderResult result;
   result.samples.assign(static_cast<std::size_t>(settings.width) * settings.height, 0);
-  std::vector<RayCounts> tile_counts(render_tasks(film));
-  // L(ray) by Whitted's recursion, each eye ray counted (per tile: no lock) and
+  PerThread<RayCounts> thread_counts;
+  // L(ray) by Whitted's recursion, each eye ray counted (per thread: no lock) and
   // tallied for its pixel.
   const auto whitted = [&](const Ray& eye, PixelSample& sample) {
     ++result.samples[static_cast<std::size_t>(sample.y) * settings.width + sample.x];
-    RayCounts& counts = tile_counts[sample.task];
+    RayCounts& counts = thread_counts.mine();
     counts.count(RayKind::Primary, 0);
     return trace(world, eye, settings.trace, counts, sample);
   };
   const Timer timer;
   render_pass(film, world.scene.camera, settings.sampling, whitted, threads);
   result.seconds = timer.seconds();
-  for (const RayCounts& counts : tile_counts) result.counts += counts;
+  for (const RayCounts& counts : thread_counts.all()) result.counts += counts;
   result.image = film_mean(film);
   return result;
 }

@@ -37,7 +37,7 @@ vec2 PixelSample::get_2d(std::uint32_t dimension) {
 
 PixelSample stream_sample(Rng& rng) {
   static const SampleSequence independent{};
-  return {0, 0, {}, 0, rng, 0, independent, 0};
+  return {0, 0, {}, 0, rng, independent, 0};
 }
 
 int samples_per_pass(const Sampling& s) {
@@ -65,7 +65,7 @@ void render_pass(Film& film, const Camera& camera, const Sampling& sampling, Rad
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * film.width + x;
-        PixelSample sample{x, y, {}, first_index, film.rng[i], tile, film.sequence, i};
+        PixelSample sample{x, y, {}, first_index, film.rng[i], film.sequence, i};
         // L along the eye ray through point p of the pixel's unit square.
         const auto estimate = [&](vec2 p) {
           sample.position = vec2(x + p.x, y + p.y);

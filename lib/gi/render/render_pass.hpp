@@ -32,8 +32,6 @@ struct PixelSample {
   vec2 position;        // where the eye ray crosses the image, in pixels: x + u, y + v
   long long index = 0;  // the sample's number in its pixel, counted over every pass: 0, 1, 2, ...
   Rng& rng;             // the pixel's random stream: whatever the method draws, it draws from here
-  int task = 0;         // the tile being rendered (0 .. render_tasks - 1): a method may keep a
-                        // tally per tile (rays cast) without a lock
   const SampleSequence& sequence;  // the film's number sequence
   std::uint64_t pixel = 0;         // y * width + x: which pixel's numbers
 
@@ -72,7 +70,8 @@ class RadianceFunction {
 // thread count. Throws std::invalid_argument for bad sampling or camera settings.
 void render_pass(Film& film, const Camera& camera, const Sampling& sampling, RadianceFunction radiance, int threads);
 
-// The number of tiles of a film: PixelSample::task runs from 0 to this less one.
+// The number of tiles of a film, which the threads take in turn. A method that keeps a
+// tally (rays cast) keeps one per thread (core/per_thread.hpp), not per tile.
 int render_tasks(const Film& film);
 
 // The film's samples one pass of `sampling` adds: 1 for Centre and Adaptive, else n x n.
