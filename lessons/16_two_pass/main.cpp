@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "gi/core/samplers/sample_stream.hpp"
 #include "gi/core/timer.hpp"
 #include "gi/pathtrace/path_scenes.hpp"
 #include "gi/pathtrace/path_truth.hpp"
@@ -159,6 +160,7 @@ int main(int argc, char** argv) {
   gi::Lesson lesson("16_two_pass", "Two-pass rendering: radiosity for the diffuse interreflection, ray tracing for "
                                    "mirrors, glass and sharp shadows, scored against the path-traced truth.");
   Settings s;
+  std::string sequence = "independent";  // --sampler: sample_stream.hpp
   lesson.add_image_size(s.width, s.height);
   lesson.options()
       .add("--scene", s.scene, "what to render: both boxes, or one", {"both", "cornell", "cornell-spheres"})
@@ -166,10 +168,14 @@ int main(int argc, char** argv) {
       .add("--samples", s.eye.samples, "n x n eye rays per pixel", 1, 16)
       .add("--light-cells", s.eye.light_cells, "n x n shadow rays per light at each diffuse hit", 1, 64)
       .add("--gather", s.eye.gather_strata, "n x n final-gather rays at each diffuse hit", 1, 64)
-      .add("--references", s.references, "the folder of the stored path-traced truths (SCENE_SIDExSIDE.*)");
+      .add("--references", s.references, "the folder of the stored path-traced truths (SCENE_SIDExSIDE.*)")
+      .add("--sampler", sequence,
+           "the numbers the eye rays and shadow rays read (the final gather, exercise 16.2, reads the pixel's own)",
+           gi::sequence_option_names());
   // Before any work: a damaged or stale truth stops the lesson in one line.
   std::vector<std::pair<Settings, std::optional<gi::Truth>>> boxes;
   lesson.add_check([&] {
+    s.eye.sequence = gi::sequence_from_name(sequence);
     for (const std::string& name : s.scene == "both" ? gi::two_pass_scene_names() : std::vector<std::string>{s.scene}) {
       Settings one = s;
       one.scene = name;
