@@ -77,6 +77,39 @@ def point_links(page, source, page_dir, pages):
     return re.sub(r'\b(href|src)="([^"]*)"', repoint, page)
 
 
+def png_width(path):
+    """A PNG's width from its header (IHDR, bytes 16-19), or None for anything else."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(24)
+    except OSError:
+        return None
+    if head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
+        return None
+    return int.from_bytes(head[16:20], "big")
+
+
+def shown_width(width):
+    """The width a picture is shown at: a whole multiple of its own, at least 320 pixels
+    where that fits in 1100, as the lessons' report pages show them (report_page.cpp)."""
+    return width * max(1, min(1100 // width, -(-320 // width)))
+
+
+def enlarge_small_pictures(page, source):
+    """A small picture (a 64 x 64 error map) is enlarged pixel for pixel, not left a
+    thumbnail: its <img> gets the width the report page would give it. `src` is still
+    relative to the chapter's folder."""
+    def enlarge(match):
+        tag, url = match.group(0), html.unescape(match.group(1))
+        if urlsplit(url).scheme or not url.lower().endswith(".png"):
+            return tag
+        width = png_width(source.parent / unquote(url))
+        if not width or shown_width(width) == width:
+            return tag
+        return tag.replace("<img ", f'<img class="enlarged" width="{shown_width(width)}" ', 1)
+    return re.sub(r'<img [^>]*?src="([^"]*)"[^>]*>', enlarge, page)
+
+
 def colour_code(page):
     """Code excerpts fenced with a language (```cpp) coloured by Pygments."""
     if highlight is None:

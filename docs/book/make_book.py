@@ -27,7 +27,7 @@ import tempfile
 from pathlib import Path
 
 from book_math import Equations
-from chapter_html import anchor_headings, colour_code, markdown_to_html, page_html, point_links
+from chapter_html import anchor_headings, colour_code, enlarge_small_pictures, markdown_to_html, page_html, point_links
 
 HERE = Path(__file__).resolve().parent
 KATEX = Path("/usr/share/javascript/katex")  # Debian's libjs-katex
@@ -123,7 +123,7 @@ def main():
         try:
             body = equations.keep_in_code(markdown_to_html(cmark, equations.protect(markdown, str(source))))
             body, title, contents = anchor_headings(colour_code(body), equations.plain)
-            body = point_links(body, source, page.parent, page_of)
+            body = point_links(enlarge_small_pictures(body, source), source, page.parent, page_of)
         except ValueError as e:
             sys.exit(f"book: {source}: {e}")
         nav = navigation(source, chapters, out, page.parent, shared)

@@ -80,6 +80,22 @@ class Pages(unittest.TestCase):
     def tearDown(self):
         shutil.rmtree(self.folder)
 
+    def test_a_small_picture_is_enlarged_pixel_for_pixel(self):
+        def png_header(width, height):  # enough of a PNG for its size to be read
+            return (b"\x89PNG\r\n\x1a\n" + (13).to_bytes(4, "big") + b"IHDR" + width.to_bytes(4, "big")
+                    + height.to_bytes(4, "big"))
+        (self.docs / "images" / "small.png").write_bytes(png_header(64, 64))
+        (self.docs / "images" / "strip.png").write_bytes(png_header(200, 64))
+        (self.docs / "images" / "large.png").write_bytes(png_header(480, 360))
+        (self.docs / "03_three.md").write_text("# 03 — Three\n\n![s](images/small.png) ![t](images/strip.png) "
+                                               "![l](images/large.png)\n")
+        run = make_book("--docs", self.docs, "--out", self.out)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        page = (self.out / "03_three" / "chapter.html").read_text()
+        self.assertRegex(page, r'<img class="enlarged" width="320" src="[^"]*small.png"')  # 5 x 64
+        self.assertRegex(page, r'<img class="enlarged" width="400" src="[^"]*strip.png"')  # 2 x 200
+        self.assertRegex(page, r'<img src="[^"]*large.png"')  # already large enough
+
     def test_every_chapter_becomes_a_page_with_working_links(self):
         run = make_book("--docs", self.docs, "--out", self.out)
         self.assertEqual(run.returncode, 0, run.stderr)
