@@ -47,7 +47,18 @@ function drawProgress(label, percent) {
   process.stderr.write('\r' + bar + (percent >= 100 ? '\r' : ''));
 }
 
-const gi_lesson = require(path.resolve(lessonFile));
+// A missing file or one that is not a lesson built by the wasm preset: one line, status 2.
+let gi_lesson = null;
+try {
+  gi_lesson = require(path.resolve(lessonFile));
+} catch (error) {
+  process.stderr.write(`node_run.js: cannot load ${lessonFile}: ${String(error.message).split('\n')[0]}\n`);
+  process.exit(2);
+}
+if (typeof gi_lesson !== 'function') {
+  process.stderr.write(`node_run.js: ${lessonFile} is not a lesson built by the wasm preset (it defines no gi_lesson)\n`);
+  process.exit(2);
+}
 gi_lesson({
   arguments: args,
   thisProgram: path.basename(lessonFile, '.js'),

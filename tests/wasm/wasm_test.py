@@ -236,6 +236,17 @@ class WebAssemblyMatchesNative(unittest.TestCase):
                 self.compare_runs(lesson, options, tolerance)
                 self.compare_refusals(lesson, bad)
 
+    def test_node_run_refuses_what_is_not_a_lesson(self):
+        """docs/live/node_run.js given a missing file or a script that is not a lesson:
+        one line and status 2, not Node.js's stack trace."""
+        not_a_lesson = ARGS.work / "not_a_lesson.js"
+        not_a_lesson.write_text("module.exports = 5;\n")
+        for given in (ARGS.work / "missing.js", not_a_lesson):
+            status, _, err = run([ARGS.node, str(NODE_RUN), str(given)])
+            self.assertEqual(status, 2, f"{given.name}: status {status}")
+            self.assertEqual(len(err.strip().splitlines()), 1, f"{given.name}: {err!r}")
+            self.assertIn(given.name, err)
+
     def test_lessons_not_compared_yet(self):
         found = sorted(p.name[:-3] for p in ARGS.wasm_bin.glob("[0-9][0-9]_*.js"))
         missing = [lesson for lesson in found if lesson not in LESSONS]
