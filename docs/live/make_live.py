@@ -37,9 +37,16 @@ READS_REFERENCES = {"12_solver_showdown", "13_hierarchical", "14_path_tracing", 
 BUDGET_MB = 6.0
 
 
-def title_of(lesson):
-    """'14_path_tracing' -> 'Lesson 14: path tracing'."""
+def title_of(lesson, source_dir=HERE.parent.parent):
+    """'09_jacobi_gauss_seidel' -> 'Lesson 9: Jacobi and Gauss-Seidel', from the heading of
+    its chapter (docs/09_jacobi_gauss_seidel.md: "# 09 — Jacobi and Gauss-Seidel"), or
+    from the name where there is no chapter."""
     number, _, words = lesson.partition("_")
+    chapter = source_dir / "docs" / (lesson + ".md")
+    if chapter.is_file():
+        heading = chapter.read_text(encoding="utf-8").partition("\n")[0]
+        if heading.startswith("# ") and "—" in heading:
+            words = heading.partition("—")[2].strip()
     return f"Lesson {int(number)}: {words.replace('_', ' ')}"
 
 
